@@ -1,0 +1,323 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The work behind estimate_principal_curvatures(): vertex normals, the per-vertex cubic
+// fit of positions and normals over a ring neighbourhood (Goldfeather-Interrante), and
+// the extremality coefficients by averaged per-triangle gradients (Yoshizawa et al.).
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CURVATURE_FITTING_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_CURVATURE_FITTING_H
+
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+typedef Eigen::Vector3d Vec3;
+
+// What the fit gives at one vertex, in double precision and in 3D.
+struct Vertex_curvature
+{
+  double k1 = 0, k2 = 0;          // |k1| >= |k2|
+  Vec3 d1 = Vec3::Zero(), d2 = Vec3::Zero();
+  double dk1 = 0, dk2 = 0;        // derivative of k1 along d1, of k2 along d2
+  bool k1_is_max() const { return k1 >= k2; }
+  double k_max() const { return k1_is_max() ? k1 : k2; }
+  double k_min() const { return k1_is_max() ? k2 : k1; }
+  const Vec3& d_max() const { return k1_is_max() ? d1 : d2; }
+  const Vec3& d_min() const { return k1_is_max() ? d2 : d1; }
+};
+
+// Geometry of the faces and vertex normals, in double precision; shared by the stages.
+template <typename TriangleMesh, typename VPM>
+struct Mesh_geometry
+{
+  typedef Mesh_indexing<TriangleMesh> Indexing;
+  const Indexing& idx;
+  std::vector<Vec3> points;        // per vertex
+  std::vector<Vec3> face_normals;  // unit, zero for a degenerate face
+  std::vector<double> face_areas;
+  std::vector<Vec3> vertex_normals; // unit (angle-weighted), zero where undefined
+  std::vector<std::array<std::size_t, 3> > face_vertices;
+  double mean_edge_length = 0;
+
+  Mesh_geometry(const Indexing& indexing, VPM vpm) : idx(indexing)
+  {
+    const TriangleMesh& tm = idx.mesh();
+    points.resize(idx.number_of_vertices());
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const auto& p = get(vpm, idx.vertex_at(i));
+      points[i] = Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    const std::size_t nf = idx.number_of_faces();
+    face_normals.assign(nf, Vec3::Zero());
+    face_areas.assign(nf, 0.);
+    face_vertices.resize(nf);
+    vertex_normals.assign(points.size(), Vec3::Zero());
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      auto h = halfedge(idx.face_at(f), tm);
+      std::array<std::size_t, 3> t = { idx.id(source(h, tm)), idx.id(target(h, tm)),
+                                       idx.id(target(next(h, tm), tm)) };
+      face_vertices[f] = t;
+      Vec3 n = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
+      const double len = n.norm();
+      face_areas[f] = 0.5 * len;
+      if(len > 0 && std::isfinite(len))
+        face_normals[f] = n / len;
+      for(int c = 0; c < 3; ++c)
+      {
+        // angle-weighted normals (Thurmer and Wuthrich): insensitive to how a flat
+        // region of a CAD mesh happens to be triangulated
+        Vec3 a = points[t[(c + 1) % 3]] - points[t[c]];
+        Vec3 b = points[t[(c + 2) % 3]] - points[t[c]];
+        const double na = a.norm(), nb = b.norm();
+        if(na <= 0 || nb <= 0 || len <= 0)
+          continue;
+        const double cosang = std::max(-1., std::min(1., a.dot(b) / (na * nb)));
+        vertex_normals[t[c]] += std::acos(cosang) * face_normals[f];
+      }
+    }
+    for(Vec3& n : vertex_normals)
+    {
+      const double len = n.norm();
+      n = len > 0 ? Vec3(n / len) : Vec3(Vec3::Zero());
+    }
+    double sum = 0;
+    for(auto e : idx.edge_list())
+    {
+      auto h = halfedge(e, tm);
+      sum += (points[idx.id(source(h, tm))] - points[idx.id(target(h, tm))]).norm();
+    }
+    mean_edge_length = idx.number_of_edges() > 0 ? sum / double(idx.number_of_edges()) : 0.;
+  }
+};
+
+// Eigen-decomposition of the symmetric 2x2 shape operator [[a, b], [b, c]] in the frame
+// (u, v): principal curvatures ordered by absolute value and 3D directions.
+inline void principal_from_shape_operator(double a, double b, double c,
+                                          const Vec3& u, const Vec3& v,
+                                          Vertex_curvature& out)
+{
+  const double mean = 0.5 * (a + c);
+  const double radius = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+  const double lplus = mean + radius, lminus = mean - radius;
+  const double theta = 0.5 * std::atan2(2. * b, a - c); // direction of lplus
+  Vec3 dplus = std::cos(theta) * u + std::sin(theta) * v;
+  Vec3 dminus = -std::sin(theta) * u + std::cos(theta) * v;
+  if(std::abs(lplus) >= std::abs(lminus))
+  { out.k1 = lplus; out.k2 = lminus; out.d1 = dplus; out.d2 = dminus; }
+  else
+  { out.k1 = lminus; out.k2 = lplus; out.d1 = dminus; out.d2 = dplus; }
+}
+
+template <typename TriangleMesh, typename VPM, typename GT>
+class Curvature_fitting
+{
+public:
+  typedef Mesh_indexing<TriangleMesh> Indexing;
+
+  Curvature_fitting(const TriangleMesh& tm, VPM vpm)
+    : m_idx(tm), m_geom(m_idx, vpm)
+  {}
+
+  void estimate(unsigned int rings)
+  {
+    const std::size_t nv = m_idx.number_of_vertices();
+    m_curv.assign(nv, Vertex_curvature());
+    build_adjacency();
+    std::vector<std::size_t> stamp(nv, std::size_t(-1));
+    std::vector<std::size_t> neighborhood;
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      collect_rings(v, rings, stamp, neighborhood);
+      fit_vertex(v, neighborhood);
+    }
+    extremality();
+  }
+
+  template <typename VertexCurvatureMap>
+  void write(VertexCurvatureMap map) const
+  {
+    typedef typename boost::property_traits<VertexCurvatureMap>::value_type Value;
+    typedef typename GT::Vector_3 Vector_3;
+    for(std::size_t i = 0; i < m_curv.size(); ++i)
+    {
+      const Vertex_curvature& c = m_curv[i];
+      Value val;
+      val.k1 = c.k1; val.k2 = c.k2; val.dk1 = c.dk1; val.dk2 = c.dk2;
+      val.d1 = Vector_3(c.d1.x(), c.d1.y(), c.d1.z());
+      val.d2 = Vector_3(c.d2.x(), c.d2.y(), c.d2.z());
+      put(map, m_idx.vertex_at(i), val);
+    }
+  }
+
+  const std::vector<Vertex_curvature>& curvatures() const { return m_curv; }
+  const Indexing& indexing() const { return m_idx; }
+  const Mesh_geometry<TriangleMesh, VPM>& geometry() const { return m_geom; }
+
+private:
+  void build_adjacency()
+  {
+    const TriangleMesh& tm = m_idx.mesh();
+    const std::size_t nv = m_idx.number_of_vertices();
+    m_adj_begin.assign(nv + 1, 0);
+    for(auto e : m_idx.edge_list())
+    {
+      auto h = halfedge(e, tm);
+      ++m_adj_begin[m_idx.id(source(h, tm)) + 1];
+      ++m_adj_begin[m_idx.id(target(h, tm)) + 1];
+    }
+    for(std::size_t i = 0; i < nv; ++i) m_adj_begin[i + 1] += m_adj_begin[i];
+    m_adj.resize(m_adj_begin[nv]);
+    std::vector<std::size_t> fill(m_adj_begin.begin(), m_adj_begin.end() - 1);
+    for(auto e : m_idx.edge_list())
+    {
+      auto h = halfedge(e, tm);
+      std::size_t a = m_idx.id(source(h, tm)), b = m_idx.id(target(h, tm));
+      m_adj[fill[a]++] = b;
+      m_adj[fill[b]++] = a;
+    }
+  }
+
+  void collect_rings(std::size_t v, unsigned int rings, std::vector<std::size_t>& stamp,
+                     std::vector<std::size_t>& out) const
+  {
+    out.clear();
+    stamp[v] = v;
+    std::size_t front_begin = 0;
+    out.push_back(v);
+    for(unsigned int r = 0; r < rings; ++r)
+    {
+      const std::size_t front_end = out.size();
+      for(std::size_t i = front_begin; i < front_end; ++i)
+        for(std::size_t k = m_adj_begin[out[i]]; k < m_adj_begin[out[i] + 1]; ++k)
+        {
+          std::size_t w = m_adj[k];
+          if(stamp[w] != v) { stamp[w] = v; out.push_back(w); }
+        }
+      front_begin = front_end;
+    }
+    out.erase(out.begin()); // the vertex itself is the origin of the fit
+  }
+
+  // Least-squares fit of z = A/2 x^2 + B xy + C/2 y^2 + D x^3 + E x^2 y + F x y^2 + G y^3
+  // to neighbour positions (one equation each) and normals (two equations each) in the
+  // frame of the vertex normal, in coordinates scaled by the neighbourhood size.
+  void fit_vertex(std::size_t v, const std::vector<std::size_t>& nbh)
+  {
+    const Vec3& n = m_geom.vertex_normals[v];
+    if(n.squaredNorm() == 0 || nbh.size() < 2)
+      return;
+    Vec3 u = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    u = (u - u.dot(n) * n).normalized();
+    const Vec3 w = n.cross(u);
+    const Vec3& p0 = m_geom.points[v];
+    double h = 0;
+    for(std::size_t q : nbh) h = std::max(h, (m_geom.points[q] - p0).norm());
+    if(h <= 0)
+      return;
+    const bool cubic = nbh.size() >= 4;
+    const int nu = cubic ? 7 : 3;
+    Eigen::Matrix<double, 7, 7> AtA = Eigen::Matrix<double, 7, 7>::Zero();
+    Eigen::Matrix<double, 7, 1> Atb = Eigen::Matrix<double, 7, 1>::Zero();
+    auto add_row = [&](const Eigen::Matrix<double, 7, 1>& row, double rhs) {
+      AtA.noalias() += row * row.transpose();
+      Atb.noalias() += row * rhs;
+    };
+    for(std::size_t q : nbh)
+    {
+      const Vec3 d = (m_geom.points[q] - p0) / h;
+      const double x = d.dot(u), y = d.dot(w), z = d.dot(n);
+      Eigen::Matrix<double, 7, 1> row;
+      row << 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+      if(!cubic) row.tail<4>().setZero();
+      add_row(row, z);
+      const Vec3& nq = m_geom.vertex_normals[q];
+      const double nz = nq.dot(n);
+      if(nz > 0.2) // normals folded past ~78 degrees say nothing reliable about slopes
+      {
+        const double fx = -nq.dot(u) / nz, fy = -nq.dot(w) / nz;
+        Eigen::Matrix<double, 7, 1> rx, ry;
+        rx << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
+        ry << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
+        if(!cubic) { rx.tail<4>().setZero(); ry.tail<4>().setZero(); }
+        add_row(rx, fx);
+        add_row(ry, fy);
+      }
+    }
+    // A small ridge term keeps the system well posed when the neighbourhood is nearly
+    // collinear; it is negligible against the data term otherwise.
+    const double lambda = 1e-9 * std::max(1e-300, AtA.trace());
+    for(int i = 0; i < 7; ++i) AtA(i, i) += (i < nu) ? lambda : 1.;
+    Eigen::Matrix<double, 7, 1> sol = AtA.ldlt().solve(Atb);
+    if(!sol.allFinite())
+      return;
+    // Back to unscaled coordinates: second derivatives scale with 1/h. The curvature
+    // is the Hessian of -z since the normal points away from where the surface bends.
+    const double a = -sol(0) / h, b = -sol(1) / h, c = -sol(2) / h;
+    principal_from_shape_operator(a, b, c, u, w, m_curv[v]);
+  }
+
+  // Yoshizawa et al.: gradient of the signed k_max and k_min fields, linear over each
+  // triangle, averaged over the faces around each vertex weighted by area.
+  void extremality()
+  {
+    const std::size_t nv = m_idx.number_of_vertices(), nf = m_idx.number_of_faces();
+    std::vector<Vec3> gmax(nv, Vec3::Zero()), gmin(nv, Vec3::Zero());
+    std::vector<double> wsum(nv, 0.);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const double area = m_geom.face_areas[f];
+      if(area <= 0 || m_geom.face_normals[f].squaredNorm() == 0)
+        continue;
+      const auto& t = m_geom.face_vertices[f];
+      const Vec3& fn = m_geom.face_normals[f];
+      Vec3 gradmax = Vec3::Zero(), gradmin = Vec3::Zero();
+      for(int c = 0; c < 3; ++c)
+      {
+        // gradient of the hat function of corner c: n x (opposite edge) / (2 area)
+        const Vec3 opp = m_geom.points[t[(c + 2) % 3]] - m_geom.points[t[(c + 1) % 3]];
+        const Vec3 gphi = fn.cross(opp) / (2. * area);
+        gradmax += m_curv[t[c]].k_max() * gphi;
+        gradmin += m_curv[t[c]].k_min() * gphi;
+      }
+      for(int c = 0; c < 3; ++c)
+      {
+        gmax[t[c]] += area * gradmax;
+        gmin[t[c]] += area * gradmin;
+        wsum[t[c]] += area;
+      }
+    }
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      if(wsum[v] <= 0) continue;
+      Vertex_curvature& c = m_curv[v];
+      const double emax = gmax[v].dot(c.d_max()) / wsum[v];
+      const double emin = gmin[v].dot(c.d_min()) / wsum[v];
+      if(c.k1_is_max()) { c.dk1 = emax; c.dk2 = emin; }
+      else { c.dk1 = emin; c.dk2 = emax; }
+    }
+  }
+
+  Indexing m_idx;
+  Mesh_geometry<TriangleMesh, VPM> m_geom;
+  std::vector<Vertex_curvature> m_curv;
+  std::vector<std::size_t> m_adj_begin, m_adj;
+};
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_CURVATURE_FITTING_H

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Principal curvatures, principal directions and the curvature derivatives that crest
+// lines need, estimated at the vertices of a triangle mesh. This is the first stage of
+// the pipeline: the anisotropic metric of the edge weights uses k1, k2, d1, d2, and the
+// crest lines use the extremality coefficients.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_PRINCIPAL_CURVATURES_H
+#define CGAL_FEATURE_SEGMENTATION_PRINCIPAL_CURVATURES_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/input_checks.h>
+#include <CGAL/Feature_segmentation/internal/curvature_fitting.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+
+namespace CGAL {
+namespace Feature_segmentation {
+
+/// \ingroup PkgFeatureSegmentationCurvature
+/// The principal curvatures at a vertex, ordered by absolute value as the paper's
+/// anisotropic metric uses them, with their directions and derivatives.
+///
+/// Signs: a curvature is positive where the surface bends away from its normal, the
+/// normal being given by the face orientation (outward on a positively oriented closed
+/// mesh): a sphere of radius r has k1 = k2 = 1/r.
+///
+/// \tparam GeomTraits a model of `Kernel`
+template <typename GeomTraits>
+struct Principal_curvatures
+{
+  typedef typename GeomTraits::FT FT;
+  typedef typename GeomTraits::Vector_3 Vector_3;
+
+  FT k1 = FT(0);       ///< the principal curvature of largest absolute value
+  FT k2 = FT(0);       ///< the other principal curvature, `|k2| <= |k1|`
+  Vector_3 d1 = Vector_3(0, 0, 0); ///< unit principal direction of `k1`, tangent to the surface
+  Vector_3 d2 = Vector_3(0, 0, 0); ///< unit principal direction of `k2`; `d1`, `d2` and the normal are orthonormal
+  FT dk1 = FT(0);      ///< derivative of the curvature `k1` along `d1` (an extremality coefficient)
+  FT dk2 = FT(0);      ///< derivative of the curvature `k2` along `d2`
+
+  /// `|k1| - |k2|`, the anisotropy `s` of the paper's metric (Eq. 6).
+  FT anisotropy() const { return CGAL::abs(k1) - CGAL::abs(k2); }
+  /// `true` when `k1` is the larger of the two signed curvatures.
+  bool k1_is_max() const { return k1 >= k2; }
+  /// The larger signed principal curvature, `k_max` of the crest-line literature.
+  FT k_max() const { return k1_is_max() ? k1 : k2; }
+  /// The smaller signed principal curvature, `k_min`.
+  FT k_min() const { return k1_is_max() ? k2 : k1; }
+  /// The direction of `k_max`.
+  const Vector_3& d_max() const { return k1_is_max() ? d1 : d2; }
+  /// The direction of `k_min`.
+  const Vector_3& d_min() const { return k1_is_max() ? d2 : d1; }
+  /// The extremality coefficient `e_max`: derivative of `k_max` along `d_max`.
+  FT e_max() const { return k1_is_max() ? dk1 : dk2; }
+  /// The extremality coefficient `e_min`: derivative of `k_min` along `d_min`.
+  FT e_min() const { return k1_is_max() ? dk2 : dk1; }
+};
+
+/// \ingroup PkgFeatureSegmentationCurvature
+/// Estimates, at every vertex of `tm`, the principal curvatures, their directions and
+/// their derivatives along their directions, and writes them into `curvature_map`.
+///
+/// Method. At each vertex, a cubic height function over the tangent plane of the vertex
+/// normal (angle-weighted average of the face normals) is fitted in the least-squares
+/// sense to the positions and normals of the vertices within `neighborhood_rings` rings
+/// (Goldfeather and Interrante 2004); its Hessian gives the curvatures and directions.
+/// The derivatives follow Yoshizawa, Belyaev and Seidel 2005: the gradient of the signed
+/// fields `k_max` and `k_min`, linear over each triangle, is averaged over the faces
+/// around the vertex (weighted by area) and projected on the direction. Using positions
+/// and normals, the fit stays well posed on CAD meshes with large flat triangles, where
+/// position-only jet fitting fails. The neighbourhood size is the scale of the features:
+/// one or two rings keep sharp features sharp (octaflower), more rings smooth noise.
+///
+/// Degenerate (zero-area) faces take no part in normals and gradients. A vertex with
+/// fewer than two neighbours in its neighbourhood gets zero curvatures.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VertexCurvatureMap a model of `WritablePropertyMap` with
+///         `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and
+///         `Principal_curvatures<GeomTraits>` as value
+/// \param tm a triangle mesh (checked with `check_input_mesh()`: throws `Invalid_input`)
+/// \param curvature_map the output
+/// \param np optional named parameters:
+///   - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+///   - `geom_traits`: default the kernel of the point type
+///   - `vertex_index_map`: default an internal or initialised index map
+///   - `neighborhood_rings` (unsigned int, at least 1): default 2
+template <typename TriangleMesh, typename VertexCurvatureMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void estimate_principal_curvatures(const TriangleMesh& tm,
+                                   VertexCurvatureMap curvature_map,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_const_property_map(CGAL::vertex_point, tm));
+  const int rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 2);
+  if(rings < 1)
+    throw Invalid_input("neighborhood_rings must be at least 1 (got " + std::to_string(rings) + ")");
+
+  check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
+
+  internal::Curvature_fitting<TriangleMesh, VPM, GT> fitting(tm, vpm);
+  fitting.estimate(static_cast<unsigned int>(rings));
+  fitting.write(curvature_map);
+}
+
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_FEATURE_SEGMENTATION_PRINCIPAL_CURVATURES_H

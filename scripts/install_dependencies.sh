@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the package, its tests, benchmarks and manual need.
+# A no-op when everything is present; nothing is fetched from outside Debian's archive.
+set -euo pipefail
+
+packages=(
+  build-essential cmake
+  libcgal-dev      # CGAL 5.5 (header-only)
+  libcgal-demo     # /usr/share/doc/libcgal-dev/data.tar.gz: fandisk and the other CAD meshes
+  libboost-graph-dev libboost-test-dev
+  libeigen3-dev
+  doxygen
+  ccache
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_dependencies: all Debian packages present"
+  exit 0
+fi
+
+echo "install_dependencies: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install_dependencies: done"

@@ -1,0 +1,159 @@
+// Analytic test surfaces built as polygon soups, so every mesh type (Surface_mesh,
+// Polyhedron_3) and kernel can be made from them with polygon_soup_to_polygon_mesh.
+#ifndef FS_TEST_MESHES_H
+#define FS_TEST_MESHES_H
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace fs_test {
+
+struct Soup
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::vector<std::size_t> > faces;
+};
+
+template <typename Mesh>
+Mesh to_mesh(const Soup& s)
+{
+  typedef typename boost::property_traits<
+    typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
+  std::vector<Point> pts;
+  for(const auto& p : s.points) pts.emplace_back(p[0], p[1], p[2]);
+  Mesh m;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, s.faces, m);
+  return m;
+}
+
+// A grid of (nu x nv) quads over [0,1]^2 mapped by f, each quad split into two triangles
+// along alternating diagonals (no preferred direction); periodic in u and/or v if asked.
+template <typename F>
+Soup parametric_grid(int nu, int nv, bool periodic_u, bool periodic_v, F f)
+{
+  Soup s;
+  const int pu = periodic_u ? nu : nu + 1, pv = periodic_v ? nv : nv + 1;
+  for(int j = 0; j < pv; ++j)
+    for(int i = 0; i < pu; ++i)
+      s.points.push_back(f(double(i) / nu, double(j) / nv));
+  auto id = [&](int i, int j) { return std::size_t((j % pv) * pu + (i % pu)); };
+  for(int j = 0; j < nv; ++j)
+    for(int i = 0; i < nu; ++i)
+    {
+      std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if((i + j) % 2 == 0) { s.faces.push_back({a, b, c}); s.faces.push_back({a, c, d}); }
+      else { s.faces.push_back({a, b, d}); s.faces.push_back({b, c, d}); }
+    }
+  return s;
+}
+
+// Icosahedron subdivided `level` times and projected on the sphere of radius r (outward).
+inline Soup icosphere(double r, int level)
+{
+  const double t = (1. + std::sqrt(5.)) / 2.;
+  Soup s;
+  s.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  s.faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+             {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+             {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for(int l = 0; l < level; ++l)
+  {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+    auto midpoint = [&](std::size_t a, std::size_t b) {
+      auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = mid.find(key);
+      if(it != mid.end()) return it->second;
+      std::array<double, 3> m;
+      for(int k = 0; k < 3; ++k) m[k] = 0.5 * (s.points[a][k] + s.points[b][k]);
+      s.points.push_back(m);
+      return mid[key] = s.points.size() - 1;
+    };
+    std::vector<std::vector<std::size_t> > nf;
+    for(const auto& f : s.faces)
+    {
+      std::size_t a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
+      nf.push_back({f[0], a, c}); nf.push_back({f[1], b, a});
+      nf.push_back({f[2], c, b}); nf.push_back({a, b, c});
+    }
+    s.faces.swap(nf);
+  }
+  for(auto& p : s.points)
+  {
+    const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    for(int k = 0; k < 3; ++k) p[k] *= r / len;
+  }
+  return s;
+}
+
+// Open cylinder of radius r and height hgt around the z axis, outward normals.
+inline Soup cylinder(double r, double hgt, int n_around, int n_along)
+{
+  return parametric_grid(n_around, n_along, true, false, [&](double u, double v) {
+    const double a = 2 * M_PI * u;
+    return std::array<double, 3>{r * std::cos(a), r * std::sin(a), hgt * (v - 0.5)};
+  });
+}
+
+// The saddle z = x^2 - y^2 over [-a, a]^2 (upward normals).
+inline Soup saddle(double a, int n)
+{
+  return parametric_grid(n, n, false, false, [&](double u, double v) {
+    const double x = a * (2 * u - 1), y = a * (2 * v - 1);
+    return std::array<double, 3>{x, y, x * x - y * y};
+  });
+}
+
+// A square [-a, a]^2 in the plane z = 0.
+inline Soup plane(double a, int n)
+{
+  return parametric_grid(n, n, false, false, [&](double u, double v) {
+    return std::array<double, 3>{a * (2 * u - 1), a * (2 * v - 1), 0.};
+  });
+}
+
+// A torus around the z axis whose tube has a lobed cross-section
+// rho(phi) = r0 (1 + eps cos(lobes phi)): a surface of revolution, so meridians and
+// parallels are lines of curvature, and by symmetry the profile curvature is extremal
+// at the crests (phi = 2 pi j / lobes: convex, ridge circles) and at the troughs
+// (phi = pi (2j+1) / lobes: concave when eps lobes^2 > 1, valley circles).
+struct Lobed_torus
+{
+  double R = 3., r0 = 1., eps = 0.12;
+  int lobes = 4;
+  double rho(double phi) const { return r0 * (1 + eps * std::cos(lobes * phi)); }
+  std::array<double, 3> point(double theta, double phi) const
+  {
+    const double q = R + rho(phi) * std::cos(phi);
+    return {q * std::cos(theta), q * std::sin(theta), rho(phi) * std::sin(phi)};
+  }
+  Soup soup(int n_around, int n_tube) const
+  {
+    // parameter order (theta, phi) with theta along u gives outward normals
+    return parametric_grid(n_around, n_tube, true, true, [&](double u, double v) {
+      return point(2 * M_PI * u, 2 * M_PI * v);
+    });
+  }
+  // Distance from p to the nearest crest (ridge) or trough (valley) circle.
+  double distance_to_circles(const std::array<double, 3>& p, bool ridges) const
+  {
+    const double q = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+    double best = 1e300;
+    for(int j = 0; j < lobes; ++j)
+    {
+      const double phi = (ridges ? 2 * M_PI * j : M_PI * (2 * j + 1)) / lobes;
+      const double cq = R + rho(phi) * std::cos(phi), cz = rho(phi) * std::sin(phi);
+      best = std::min(best, std::hypot(q - cq, p[2] - cz));
+    }
+    return best;
+  }
+};
+
+} // namespace fs_test
+
+#endif // FS_TEST_MESHES_H
