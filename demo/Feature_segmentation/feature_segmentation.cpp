@@ -1,0 +1,472 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The command-line program of the package: reads a mesh, runs the pipeline stage by
+// stage (load -> curvature -> feature lines), each stage timed, and writes the feature
+// lines (CGAL polylines and OBJ) and a JSON summary into an output folder. Bad input or
+// bad options give one "error: ..." line on stderr and a non-zero exit status.
+
+#include "read_input_mesh.h"
+#include "read_user_feature_lines.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
+#include <CGAL/Feature_segmentation/crest_lines.h>
+#include <CGAL/Feature_segmentation/input_checks.h>
+#include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/principal_curvatures.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace FS = CGAL::Feature_segmentation;
+
+const char* const program_name = "feature_segmentation";
+
+// A wrong command line: reported with exit status 2, as getopt-style programs do.
+class Usage_error : public std::runtime_error
+{
+public:
+  explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+struct Options
+{
+  std::string input = std::string(FS_MESH_DIR) + "/fandisk.off";
+  std::string output_dir = "feature_segmentation_output";
+  int rings = 2;
+  std::optional<double> strength_threshold; // unset: the library's default
+  bool ridges = true;
+  bool valleys = true;
+  std::string feature_edges_file;           // empty: none
+  bool quiet = false;
+  bool help = false;
+};
+
+void print_usage(std::ostream& os)
+{
+  os << "Usage: " << program_name << " [MESH] [--output-dir DIR] [options]\n"
+     << "\n"
+     << "Detects the feature lines (ridges and valleys) of a triangle mesh and writes\n"
+     << "  DIR/feature_lines.polylines.txt  CGAL polylines, one feature line per line of text\n"
+     << "  DIR/feature_lines.obj            the same lines as OBJ line elements\n"
+     << "  DIR/summary.json                 mesh and feature counts, seconds per stage\n"
+     << "\n"
+     << "MESH is an .off, .obj, .ply or .stl file (default: " << FS_MESH_DIR << "/fandisk.off).\n"
+     << "Quads and polygons are triangulated, duplicate points and faces removed, with a\n"
+     << "notice on stderr.\n"
+     << "\n"
+     << "Options:\n"
+     << "  --output-dir DIR          output folder, created if needed\n"
+     << "                            (default: ./feature_segmentation_output)\n"
+     << "  --rings N                 curvature neighbourhood in rings, integer >= 1 (default: 2)\n"
+     << "  --strength-threshold X    drop feature lines weaker than X, X >= 0\n"
+     << "                            (default: " << FS::default_strength_threshold << ")\n"
+     << "  --no-ridges               do not detect ridges\n"
+     << "  --no-valleys              do not detect valleys\n"
+     << "  --feature-edges FILE      add user feature lines: a CGAL polylines file whose\n"
+     << "                            points are mesh vertices and segments mesh edges\n"
+     << "  --quiet                   no progress or notice lines on stderr\n"
+     << "  --help                    print this help and exit\n";
+}
+
+// Strict number parsing: the whole argument must be the number ("1.5x", "", "abc",
+// "nan" and out-of-range values are refused).
+int parse_int(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  long value = 0;
+  try
+  {
+    value = std::stol(text, &used, 10);
+  }
+  catch(const std::exception&)
+  {
+    throw Usage_error(option + " expects an integer (got '" + text + "')");
+  }
+  if(used != text.size() || std::isspace(static_cast<unsigned char>(text[0])))
+    throw Usage_error(option + " expects an integer (got '" + text + "')");
+  if(value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+    throw Usage_error(option + " is out of range (got '" + text + "')");
+  return static_cast<int>(value);
+}
+
+double parse_double(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  double value = 0;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch(const std::exception&)
+  {
+    throw Usage_error(option + " expects a number (got '" + text + "')");
+  }
+  if(used != text.size() || std::isspace(static_cast<unsigned char>(text[0])))
+    throw Usage_error(option + " expects a number (got '" + text + "')");
+  if(!std::isfinite(value))
+    throw Usage_error(option + " expects a finite number (got '" + text + "')");
+  return value;
+}
+
+Options parse_command_line(int argc, char** argv)
+{
+  Options options;
+  bool has_input = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    std::string value;
+    bool has_inline_value = false;
+    if(arg.rfind("--", 0) == 0)
+    {
+      const std::size_t eq = arg.find('=');
+      if(eq != std::string::npos)
+      {
+        value = arg.substr(eq + 1);
+        arg = arg.substr(0, eq);
+        has_inline_value = true;
+      }
+    }
+    auto take_value = [&]() -> std::string {
+      if(has_inline_value)
+        return value;
+      if(i + 1 >= argc)
+        throw Usage_error(arg + " expects a value");
+      return argv[++i];
+    };
+    auto refuse_value = [&]() {
+      if(has_inline_value)
+        throw Usage_error(arg + " takes no value");
+    };
+
+    if(arg == "--help" || arg == "-h") { refuse_value(); options.help = true; }
+    else if(arg == "--quiet") { refuse_value(); options.quiet = true; }
+    else if(arg == "--no-ridges") { refuse_value(); options.ridges = false; }
+    else if(arg == "--no-valleys") { refuse_value(); options.valleys = false; }
+    else if(arg == "--output-dir")
+    {
+      options.output_dir = take_value();
+      if(options.output_dir.empty())
+        throw Usage_error("--output-dir expects a non-empty folder name");
+    }
+    else if(arg == "--rings")
+    {
+      options.rings = parse_int(arg, take_value());
+      if(options.rings < 1)
+        throw Usage_error("--rings must be an integer >= 1 (got " +
+                          std::to_string(options.rings) + ")");
+    }
+    else if(arg == "--strength-threshold")
+    {
+      const std::string text = take_value();
+      const double x = parse_double(arg, text);
+      if(x < 0)
+        throw Usage_error("--strength-threshold must be >= 0 (got '" + text + "')");
+      options.strength_threshold = x;
+    }
+    else if(arg == "--feature-edges")
+    {
+      options.feature_edges_file = take_value();
+      if(options.feature_edges_file.empty())
+        throw Usage_error("--feature-edges expects a file name");
+    }
+    else if(arg.size() > 1 && arg[0] == '-')
+      throw Usage_error("unknown option '" + arg + "' (see --help)");
+    else
+    {
+      if(has_input)
+        throw Usage_error("more than one input mesh ('" + options.input + "' and '" + arg + "')");
+      options.input = arg;
+      has_input = true;
+    }
+  }
+  if(!options.ridges && !options.valleys && !options.quiet && !options.help)
+    std::cerr << "notice: --no-ridges and --no-valleys: no crest lines will be detected\n";
+  return options;
+}
+
+// Wall-clock seconds of each stage, in the order the stages ran.
+class Stage_timer
+{
+public:
+  explicit Stage_timer(bool quiet) : m_quiet(quiet) {}
+
+  template <typename F>
+  auto run(const std::string& name, F&& f)
+  {
+    if(!m_quiet)
+      std::cerr << "[" << name << "] ..." << std::endl;
+    const auto start = std::chrono::steady_clock::now();
+    auto finish = [&]() {
+      const std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
+      m_seconds.emplace_back(name, d.count());
+      if(!m_quiet)
+        std::cerr << "[" << name << "] done in " << std::fixed << std::setprecision(3)
+                  << d.count() << " s" << std::defaultfloat << std::endl;
+    };
+    if constexpr(std::is_void_v<decltype(f())>)
+    {
+      f();
+      finish();
+    }
+    else
+    {
+      auto result = f();
+      finish();
+      return result;
+    }
+  }
+
+  const std::vector<std::pair<std::string, double> >& seconds() const { return m_seconds; }
+
+private:
+  bool m_quiet;
+  std::vector<std::pair<std::string, double> > m_seconds;
+};
+
+std::string json_string(const std::string& s)
+{
+  std::ostringstream os;
+  os << '"';
+  for(unsigned char c : s)
+  {
+    switch(c)
+    {
+      case '"': os << "\\\""; break;
+      case '\\': os << "\\\\"; break;
+      case '\n': os << "\\n"; break;
+      case '\t': os << "\\t"; break;
+      case '\r': os << "\\r"; break;
+      default:
+        if(c < 0x20)
+          os << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
+        else
+          os << c;
+    }
+  }
+  os << '"';
+  return os.str();
+}
+
+std::string json_number(double x, int digits = std::numeric_limits<double>::max_digits10)
+{
+  std::ostringstream os;
+  os << std::setprecision(digits) << x;
+  return os.str();
+}
+
+struct Results
+{
+  fs_demo::Read_report read_report;
+  std::size_t number_of_vertices = 0;
+  std::size_t number_of_edges = 0;
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_feature_edges = 0;
+  std::size_t number_of_ridges = 0;
+  std::size_t number_of_valleys = 0;
+  std::size_t number_of_user_lines = 0;
+  std::size_t number_of_lines = 0;
+};
+
+void write_summary(std::ostream& os, const Options& options, const Results& r,
+                   const std::vector<std::pair<std::string, double> >& seconds)
+{
+  const double threshold = options.strength_threshold ? *options.strength_threshold
+                                                      : FS::default_strength_threshold;
+  os << "{\n"
+     << "  \"program\": \"" << program_name << "\",\n"
+     << "  \"input\": " << json_string(options.input) << ",\n"
+     << "  \"options\": {\n"
+     << "    \"rings\": " << options.rings << ",\n"
+     << "    \"strength_threshold\": " << json_number(threshold) << ",\n"
+     << "    \"ridges\": " << (options.ridges ? "true" : "false") << ",\n"
+     << "    \"valleys\": " << (options.valleys ? "true" : "false") << ",\n"
+     << "    \"feature_edges_file\": "
+     << (options.feature_edges_file.empty() ? std::string("null")
+                                            : json_string(options.feature_edges_file)) << "\n"
+     << "  },\n"
+     << "  \"input_file\": {\n"
+     << "    \"format\": " << json_string(r.read_report.format) << ",\n"
+     << "    \"vertices\": " << r.read_report.number_of_file_points << ",\n"
+     << "    \"faces\": " << r.read_report.number_of_file_faces << ",\n"
+     << "    \"removed_vertices\": " << r.read_report.number_of_merged_points << ",\n"
+     << "    \"removed_faces\": " << r.read_report.number_of_removed_faces << ",\n"
+     << "    \"duplicated_vertices\": " << r.read_report.number_of_duplicated_points << ",\n"
+     << "    \"triangulated_faces\": " << r.read_report.number_of_triangulated_faces << "\n"
+     << "  },\n"
+     << "  \"mesh\": {\n"
+     << "    \"vertices\": " << r.number_of_vertices << ",\n"
+     << "    \"edges\": " << r.number_of_edges << ",\n"
+     << "    \"faces\": " << r.number_of_faces << ",\n"
+     << "    \"border_edges\": " << r.read_report.number_of_border_edges << "\n"
+     << "  },\n"
+     << "  \"feature_lines\": {\n"
+     << "    \"total\": " << r.number_of_lines << ",\n"
+     << "    \"ridges\": " << r.number_of_ridges << ",\n"
+     << "    \"valleys\": " << r.number_of_valleys << ",\n"
+     << "    \"user\": " << r.number_of_user_lines << "\n"
+     << "  },\n"
+     << "  \"feature_edges\": " << r.number_of_feature_edges << ",\n"
+     << "  \"seconds\": {\n";
+  double total = 0;
+  for(const auto& s : seconds)
+  {
+    os << "    " << json_string(s.first) << ": " << json_number(s.second, 6) << ",\n";
+    total += s.second;
+  }
+  os << "    \"total\": " << json_number(total, 6) << "\n"
+     << "  }\n"
+     << "}\n";
+}
+
+// Writes a file through `write`, failing with a clear message when it cannot.
+template <typename Write>
+void write_file(const std::filesystem::path& path, Write&& write)
+{
+  std::ofstream out(path);
+  if(!out)
+    throw std::runtime_error(path.string() + ": cannot be opened for writing");
+  write(out);
+  out.close();
+  if(!out)
+    throw std::runtime_error(path.string() + ": write failed");
+}
+
+int run(const Options& options)
+{
+  namespace sfs = std::filesystem;
+  Stage_timer timer(options.quiet);
+  Results results;
+
+  // Fail on an unusable output folder before spending time on the mesh.
+  std::error_code ec;
+  sfs::create_directories(options.output_dir, ec);
+  if(ec || !sfs::is_directory(options.output_dir))
+    throw std::runtime_error(options.output_dir + ": cannot create the output folder" +
+                             (ec ? " (" + ec.message() + ")" : std::string()));
+
+  Mesh mesh;
+  results.read_report = timer.run("load", [&]() {
+    return fs_demo::read_input_mesh(options.input, mesh);
+  });
+  if(!options.quiet)
+    for(const std::string& notice : results.read_report.notices)
+      std::cerr << "notice: " << options.input << ": " << notice << '\n';
+  results.number_of_vertices = num_vertices(mesh);
+  results.number_of_edges = num_edges(mesh);
+  results.number_of_faces = num_faces(mesh);
+  if(!options.quiet)
+    std::cerr << "mesh: " << results.number_of_vertices << " vertices, "
+              << results.number_of_faces << " faces" << std::endl;
+
+  auto curvature_map =
+    mesh.add_property_map<Mesh::Vertex_index, FS::Principal_curvatures<K> >(
+      "v:fs_principal_curvatures").first;
+  timer.run("curvature", [&]() {
+    FS::estimate_principal_curvatures(mesh, curvature_map,
+                                      FS::parameters::neighborhood_rings(options.rings));
+  });
+
+  FS::Feature_lines<Mesh> lines = timer.run("feature_lines", [&]() {
+    FS::Feature_lines<Mesh> detected;
+    if(options.ridges || options.valleys)
+      detected = FS::detect_crest_lines(
+        mesh, curvature_map,
+        FS::parameters::strength_threshold(
+          options.strength_threshold ? *options.strength_threshold
+                                     : FS::default_strength_threshold)
+          .detect_ridges(options.ridges)
+          .detect_valleys(options.valleys));
+    if(!options.feature_edges_file.empty())
+      results.number_of_user_lines =
+        fs_demo::read_user_feature_lines(options.feature_edges_file, mesh, detected);
+    return detected;
+  });
+  results.number_of_ridges = lines.number_of_lines(FS::Feature_line_type::RIDGE);
+  results.number_of_valleys = lines.number_of_lines(FS::Feature_line_type::VALLEY);
+  results.number_of_lines = lines.lines.size();
+  auto edge_is_feature = mesh.add_property_map<Mesh::Edge_index, bool>("e:fs_is_feature").first;
+  results.number_of_feature_edges = FS::mark_feature_edges(mesh, lines, edge_is_feature);
+  if(!options.quiet)
+    std::cerr << "feature lines: " << results.number_of_ridges << " ridges, "
+              << results.number_of_valleys << " valleys, " << results.number_of_user_lines
+              << " user; " << results.number_of_feature_edges << " feature edges" << std::endl;
+
+  const sfs::path dir(options.output_dir);
+  timer.run("write", [&]() {
+    write_file(dir / "feature_lines.polylines.txt",
+               [&](std::ostream& os) { FS::write_polylines(os, mesh, lines); });
+    write_file(dir / "feature_lines.obj",
+               [&](std::ostream& os) { FS::write_OBJ_lines(os, mesh, lines); });
+  });
+  // Written last, so that it holds the time of every stage.
+  write_file(dir / "summary.json",
+             [&](std::ostream& os) { write_summary(os, options, results, timer.seconds()); });
+
+  if(!options.quiet)
+    std::cerr << "outputs written to " << options.output_dir << "/" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options options;
+  try
+  {
+    options = parse_command_line(argc, argv);
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << "error: " << e.what() << '\n';
+    return 2;
+  }
+  if(options.help)
+  {
+    print_usage(std::cout);
+    return EXIT_SUCCESS;
+  }
+  try
+  {
+    return run(options);
+  }
+  catch(const fs_demo::Input_error& e)
+  {
+    std::cerr << "error: " << e.what() << '\n';
+  }
+  catch(const FS::Invalid_input& e)
+  {
+    std::cerr << "error: " << options.input << ": " << e.what() << '\n';
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "error: " << options.input << ": out of memory\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "error: " << e.what() << '\n';
+  }
+  return EXIT_FAILURE;
+}

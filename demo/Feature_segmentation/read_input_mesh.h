@@ -1,0 +1,313 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Reading and validation of the input mesh of the package's programs. A mesh file is
+// read as a polygon soup with CGAL's readers (OFF, OBJ, PLY, STL), checked for what the
+// pipeline cannot process (non-finite coordinates, degenerate or folded faces,
+// non-manifold edges), repaired where a repair is harmless (duplicate points and faces,
+// pinched vertices, inconsistent orientation, quads and polygons), and turned into a
+// triangle mesh. Every failure is an `Input_error` whose message is one line naming the
+// cause, so that a program prints it and exits instead of crashing further down; every
+// repair is reported as a notice line.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
+#define CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
+
+#include <CGAL/Feature_segmentation/input_checks.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fs_demo {
+
+/// Bad input: `what()` is one line, "<file>: <reason>".
+class Input_error : public std::runtime_error
+{
+public:
+  explicit Input_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// What reading did to the file's content, for the summary and the notice lines.
+struct Read_report
+{
+  std::string format;                        ///< "off", "obj", "ply" or "stl"
+  std::size_t number_of_file_points = 0;     ///< points in the file
+  std::size_t number_of_file_faces = 0;      ///< faces in the file
+  std::size_t number_of_merged_points = 0;   ///< duplicate or unused points removed
+  std::size_t number_of_removed_faces = 0;   ///< duplicate faces removed
+  std::size_t number_of_duplicated_points = 0; ///< points split to make pinched vertices manifold
+  std::size_t number_of_triangulated_faces = 0; ///< quads and polygons split into triangles
+  std::size_t number_of_border_edges = 0;    ///< border edges of the final mesh
+  std::vector<std::string> notices;          ///< one line per repair, without prefix
+};
+
+namespace internal {
+
+inline std::string lower_case_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  if(!ext.empty() && ext[0] == '.')
+    ext.erase(0, 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// A file that does not exist, is not a regular file or cannot be opened gets its own
+// message: CGAL's readers would only return `false`.
+inline void check_readable_file(const std::string& path)
+{
+  namespace sfs = std::filesystem;
+  std::error_code ec;
+  const sfs::file_status st = sfs::status(path, ec);
+  if(!sfs::exists(st))
+    throw Input_error(path + ": no such file");
+  if(sfs::is_directory(st))
+    throw Input_error(path + ": is a directory, not a mesh file");
+  if(!sfs::is_regular_file(st))
+    throw Input_error(path + ": is not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw Input_error(path + ": cannot be opened for reading");
+  if(in.peek() == std::ifstream::traits_type::eof())
+    throw Input_error(path + ": the file is empty");
+}
+
+template <typename Point>
+bool has_finite_coordinates(const Point& p)
+{
+  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+         std::isfinite(CGAL::to_double(p.z()));
+}
+
+// `true` if all points of the polygon lie on one line (or coincide): such a face has no
+// area and no normal, so every later stage would divide by zero on it.
+template <typename Point, typename Polygon>
+bool is_degenerate_polygon(const std::vector<Point>& points, const Polygon& polygon)
+{
+  const Point& p = points[polygon[0]];
+  std::size_t j = 1;
+  while(j < polygon.size() && points[polygon[j]] == p)
+    ++j;
+  if(j == polygon.size())
+    return true;
+  const Point& q = points[polygon[j]];
+  for(std::size_t k = j + 1; k < polygon.size(); ++k)
+    if(!CGAL::collinear(p, q, points[polygon[k]]))
+      return false;
+  return true;
+}
+
+inline std::string face_name(std::size_t f) { return "face " + std::to_string(f); }
+
+// Checks that come before any repair, on the soup exactly as in the file: what a repair
+// would silently change (a degenerate face dropped by repair_polygon_soup) or cannot fix
+// is an error here.
+template <typename Point, typename Polygon>
+void check_soup(const std::string& path, const std::vector<Point>& points,
+                const std::vector<Polygon>& polygons)
+{
+  if(polygons.empty())
+    throw Input_error(path + ": contains no faces");
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(!has_finite_coordinates(points[i]))
+      throw Input_error(path + ": vertex " + std::to_string(i) +
+                        " has a NaN or infinite coordinate");
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const Polygon& polygon = polygons[f];
+    if(polygon.size() < 3)
+      throw Input_error(path + ": " + face_name(f) + " has " + std::to_string(polygon.size()) +
+                        " vertices (at least 3 are needed)");
+    for(std::size_t id : polygon)
+      if(id >= points.size())
+        throw Input_error(path + ": " + face_name(f) + " refers to vertex " + std::to_string(id) +
+                          " but the file has " + std::to_string(points.size()) + " vertices");
+    std::vector<std::size_t> sorted(polygon.begin(), polygon.end());
+    std::sort(sorted.begin(), sorted.end());
+    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      throw Input_error(path + ": " + face_name(f) + " is degenerate (it uses a vertex twice)");
+    if(is_degenerate_polygon(points, polygon))
+      throw Input_error(path + ": " + face_name(f) +
+                        " is degenerate (its points are collinear: zero area)");
+  }
+}
+
+// Faces are vertex cycles; an edge is an unordered pair of point indices. Points with the
+// same coordinates must be merged first (repair_polygon_soup) so that equal points share
+// one index.
+template <typename Polygon>
+std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> >
+soup_edge_faces(const std::vector<Polygon>& polygons)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > edge_faces;
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const Polygon& polygon = polygons[f];
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+    {
+      std::size_t a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+      edge_faces[std::make_pair((std::min)(a, b), (std::max)(a, b))].push_back(f);
+    }
+  }
+  return edge_faces;
+}
+
+// The vertex of `polygon` that follows the edge {a, b} in the triangle fan of the
+// polygon containing that edge; for a triangle, its third vertex.
+template <typename Polygon>
+std::size_t opposite_vertex(const Polygon& polygon, std::size_t a, std::size_t b)
+{
+  const std::size_t n = polygon.size();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t u = polygon[i], v = polygon[(i + 1) % n];
+    if((u == a && v == b) || (u == b && v == a))
+      return polygon[(i + 2) % n];
+  }
+  return polygon[0];
+}
+
+// An edge shared by three faces or more cannot be made manifold without tearing the
+// surface apart, and two faces folded onto each other across an edge (coplanar, on the
+// same side of it) overlap: both are errors.
+template <typename Point, typename Polygon>
+void check_edges(const std::string& path, const std::vector<Point>& points,
+                 const std::vector<Polygon>& polygons)
+{
+  const auto edge_faces = soup_edge_faces(polygons);
+  for(const auto& ef : edge_faces)
+  {
+    const std::size_t a = ef.first.first, b = ef.first.second;
+    const std::vector<std::size_t>& faces = ef.second;
+    if(faces.size() > 2)
+      throw Input_error(path + ": the edge between vertices " + std::to_string(a) + " and " +
+                        std::to_string(b) + " is shared by " + std::to_string(faces.size()) +
+                        " faces (non-manifold edge)");
+    if(faces.size() == 2)
+    {
+      const Point& p = points[a];
+      const Point& q = points[b];
+      const Point& r = points[opposite_vertex(polygons[faces[0]], a, b)];
+      const Point& s = points[opposite_vertex(polygons[faces[1]], a, b)];
+      if(CGAL::coplanar(p, q, r, s) && CGAL::coplanar_orientation(p, q, r, s) == CGAL::POSITIVE)
+        throw Input_error(path + ": " + face_name(faces[0]) + " and " + face_name(faces[1]) +
+                          " overlap (folded onto each other across an edge)");
+    }
+  }
+}
+
+} // namespace internal
+
+/// Reads `path` into `mesh` (which is cleared first) and returns what was repaired.
+/// Throws `Input_error` when the file cannot be read or the mesh cannot be processed.
+template <typename Mesh>
+Read_report read_input_mesh(const std::string& path, Mesh& mesh)
+{
+  typedef typename boost::property_traits<
+    typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
+  typedef std::vector<std::size_t> Polygon;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+
+  Read_report report;
+  internal::check_readable_file(path);
+  report.format = internal::lower_case_extension(path);
+  if(report.format != "off" && report.format != "obj" && report.format != "ply" &&
+     report.format != "stl")
+    throw Input_error(path + ": unknown format " +
+                      (report.format.empty() ? std::string("(no extension)")
+                                             : "'." + report.format + "'") +
+                      " (expected .off, .obj, .ply or .stl)");
+
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  bool ok = false;
+  try
+  {
+    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
+  }
+  catch(const std::exception& e)
+  {
+    throw Input_error(path + ": cannot be read as " + report.format + " (" + e.what() + ")");
+  }
+  if(!ok)
+    throw Input_error(path + ": cannot be read as " + report.format +
+                      " (malformed or truncated file)");
+  report.number_of_file_points = points.size();
+  report.number_of_file_faces = polygons.size();
+
+  internal::check_soup(path, points, polygons);
+
+  // Merges points with equal coordinates, removes duplicate faces and unused points.
+  // Degenerate faces, which it would drop silently, were rejected above.
+  PMP::repair_polygon_soup(points, polygons);
+  if(points.size() < report.number_of_file_points)
+  {
+    report.number_of_merged_points = report.number_of_file_points - points.size();
+    report.notices.push_back("removed " + std::to_string(report.number_of_merged_points) +
+                             " duplicate or unused vertices");
+  }
+  if(polygons.size() < report.number_of_file_faces)
+  {
+    report.number_of_removed_faces = report.number_of_file_faces - polygons.size();
+    report.notices.push_back("removed " + std::to_string(report.number_of_removed_faces) +
+                             " duplicate faces");
+  }
+
+  internal::check_edges(path, points, polygons);
+
+  const std::size_t number_of_points = points.size();
+  if(!PMP::orient_polygon_soup(points, polygons) || points.size() != number_of_points)
+  {
+    report.number_of_duplicated_points = points.size() - number_of_points;
+    report.notices.push_back("duplicated " + std::to_string(report.number_of_duplicated_points) +
+                             " non-manifold or non-orientable vertices");
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw Input_error(path + ": the faces do not form a manifold surface, even after repair");
+
+  mesh.clear();
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+
+  for(auto f : faces(mesh))
+    if(!CGAL::is_triangle(halfedge(f, mesh), mesh))
+      ++report.number_of_triangulated_faces;
+  if(report.number_of_triangulated_faces > 0)
+  {
+    if(!PMP::triangulate_faces(mesh))
+      throw Input_error(path + ": a quad or polygon face cannot be triangulated");
+    report.notices.push_back("triangulated " + std::to_string(report.number_of_triangulated_faces) +
+                             " faces (quads or polygons)");
+  }
+
+  try
+  {
+    const CGAL::Feature_segmentation::Mesh_check_report checks =
+      CGAL::Feature_segmentation::check_input_mesh(mesh, /*allow_degenerate_faces=*/false);
+    report.number_of_border_edges = checks.number_of_border_edges;
+  }
+  catch(const CGAL::Feature_segmentation::Invalid_input& e)
+  {
+    throw Input_error(path + ": " + e.what());
+  }
+  return report;
+}
+
+} // namespace fs_demo
+
+#endif // CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
