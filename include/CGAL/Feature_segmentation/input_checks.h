@@ -14,7 +14,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 
 #include <cmath>
@@ -83,14 +83,24 @@ Mesh_check_report check_input_mesh(const TriangleMesh& tm,
       throw Invalid_input("the mesh has a face that is not a triangle "
                           "(triangulate it first, e.g. with Polygon_mesh_processing::triangulate_faces)");
   }
-  for(auto v : vertices(tm))
+  // A vertex is pinched (non-manifold) when the halfedges pointing to it do not all lie
+  // in the one fan around it. Linear time: CGAL 5.5's is_non_manifold_vertex() scans
+  // all halfedges for each vertex, quadratic on a whole mesh.
   {
-    if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
-      continue; // an isolated vertex takes no part in any stage
-    if(CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, tm))
-      throw Invalid_input("the mesh has a non-manifold vertex (two or more fans of faces "
-                          "meet at one vertex; split it first, e.g. with "
-                          "Polygon_mesh_processing::duplicate_non_manifold_vertices)");
+    auto vdeg = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+    for(auto v : vertices(tm)) put(vdeg, v, 0);
+    for(auto h : halfedges(tm)) put(vdeg, target(h, tm), get(vdeg, target(h, tm)) + 1);
+    for(auto v : vertices(tm))
+    {
+      if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+        continue; // an isolated vertex takes no part in any stage
+      std::size_t fan = 0;
+      for(auto h : CGAL::halfedges_around_target(v, tm)) { (void)h; ++fan; }
+      if(fan != get(vdeg, v))
+        throw Invalid_input("the mesh has a non-manifold vertex (two or more fans of faces "
+                            "meet at one vertex; split it first, e.g. with "
+                            "Polygon_mesh_processing::duplicate_non_manifold_vertices)");
+    }
   }
   for(auto f : faces(tm))
     if(CGAL::Polygon_mesh_processing::is_degenerate_triangle_face(

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Crest lines (ridges and valleys) after Yoshizawa, Belyaev and Seidel 2005, "Fast and
+// robust detection of crest lines on meshes": the feature lines whose strong parts the
+// segmentation follows. detect_crest_lines() works from a curvature map the caller
+// computed or supplied; detect_feature_lines() is the one-shot entry that estimates the
+// curvature, detects the lines and marks the feature edges.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_CREST_LINES_H
+#define CGAL_FEATURE_SEGMENTATION_CREST_LINES_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/input_checks.h>
+#include <CGAL/Feature_segmentation/principal_curvatures.h>
+#include <CGAL/Feature_segmentation/internal/crest_lines_impl.h>
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Dynamic_property_map.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+
+/// \ingroup PkgFeatureSegmentationFeatureLines
+/// The default of the named parameter `strength_threshold`: lines whose integral of
+/// |curvature| along their length is below it are dropped. A straight crease of
+/// dihedral angle theta spanning m edges has a strength of about theta * m / 2 at the
+/// default curvature scale, so the default keeps creases a few edges long; the
+/// spurious short lines of near-umbilic or noisy regions stay well below it.
+constexpr double default_strength_threshold = 1.0;
+
+/// \ingroup PkgFeatureSegmentationFeatureLines
+/// Detects ridges and valleys from a vertex curvature map.
+///
+/// On every edge, the extremality coefficient `e` (the derivative of `k_max` along its
+/// direction for ridges, of `k_min` for valleys) is tested for a zero crossing, the
+/// direction at the second vertex being flipped when it opposes the first's (directions
+/// are defined up to sign, and `e` flips with them). A crossing is a ridge point if `e`
+/// decreases along the direction (a maximum of `k_max`) and, at the crossing, `k_max >
+/// |k_min|`; a valley point if `e` increases (a minimum of `k_min`) and `k_min <
+/// -|k_max|`. Crossings near umbilics (`|k| - |k_other| <= umbilic_ratio * |k|`) are
+/// dropped, since there the directions are noise. Two crossings in a triangle are joined
+/// by a segment (with three, the two strongest are); the segments are traced into
+/// polylines, and each line's strength is the integral of |k| along it (Yoshizawa et al.).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VertexCurvatureMap a `ReadablePropertyMap` from `vertex_descriptor` to
+///         `Principal_curvatures<GeomTraits>` (filled e.g. by `estimate_principal_curvatures()`)
+/// \param tm the mesh (checked with `check_input_mesh()`)
+/// \param curvature_map the curvatures
+/// \param np optional named parameters:
+///   - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+///   - `strength_threshold` (double, >= 0): default `default_strength_threshold`
+///   - `umbilic_ratio` (double in [0, 1)): default 0.1
+///   - `detect_ridges`, `detect_valleys` (bool): default `true`
+/// \return the lines, strongest first
+/// \throws Invalid_input on a bad mesh or a bad option value
+template <typename TriangleMesh, typename VertexCurvatureMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Feature_lines<TriangleMesh>
+detect_crest_lines(const TriangleMesh& tm, VertexCurvatureMap curvature_map,
+                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_const_property_map(CGAL::vertex_point, tm));
+  internal::Crest_options opt;
+  opt.strength_threshold = choose_parameter(get_parameter(np, internal_np::strength_threshold),
+                                            default_strength_threshold);
+  opt.umbilic_ratio = choose_parameter(get_parameter(np, internal_np::umbilic_ratio), 0.1);
+  opt.ridges = choose_parameter(get_parameter(np, internal_np::detect_ridges), true);
+  opt.valleys = choose_parameter(get_parameter(np, internal_np::detect_valleys), true);
+  if(!(opt.strength_threshold >= 0) || !std::isfinite(opt.strength_threshold))
+    throw Invalid_input("strength_threshold must be a finite number >= 0 (got " +
+                        std::to_string(opt.strength_threshold) + ")");
+  if(!(opt.umbilic_ratio >= 0 && opt.umbilic_ratio < 1))
+    throw Invalid_input("umbilic_ratio must be in [0, 1) (got " + std::to_string(opt.umbilic_ratio) + ")");
+
+  check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
+
+  internal::Mesh_indexing<TriangleMesh> idx(tm);
+  std::vector<Eigen::Vector3d> points(idx.number_of_vertices());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const auto& p = get(vpm, idx.vertex_at(i));
+    points[i] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  internal::Crest_line_detector<TriangleMesh> detector(idx, points);
+  Feature_lines<TriangleMesh> result;
+  std::vector<internal::Crest_vertex_data> data(points.size());
+  for(Feature_line_type type : {Feature_line_type::RIDGE, Feature_line_type::VALLEY})
+  {
+    if((type == Feature_line_type::RIDGE && !opt.ridges) || (type == Feature_line_type::VALLEY && !opt.valleys))
+      continue;
+    const bool ridge = (type == Feature_line_type::RIDGE);
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const auto c = get(curvature_map, idx.vertex_at(i));
+      const auto& d = ridge ? c.d_max() : c.d_min();
+      data[i].k = CGAL::to_double(ridge ? c.k_max() : c.k_min());
+      data[i].k_other = CGAL::to_double(ridge ? c.k_min() : c.k_max());
+      data[i].e = CGAL::to_double(ridge ? c.e_max() : c.e_min());
+      data[i].t = Eigen::Vector3d(CGAL::to_double(d.x()), CGAL::to_double(d.y()), CGAL::to_double(d.z()));
+    }
+    detector.detect(type, data, opt, result);
+  }
+  detector.sort_lines(result);
+  return result;
+}
+
+/// \ingroup PkgFeatureSegmentationFeatureLines
+/// One shot: estimates the principal curvatures (unless `principal_curvature_map` is
+/// given), detects the crest lines, and marks the edges holding a feature point in
+/// `edge_is_feature`.
+///
+/// \tparam EdgeIsFeatureMap a `ReadWritePropertyMap` from `edge_descriptor` to `bool`
+/// \param np the named parameters of `estimate_principal_curvatures()` and
+///        `detect_crest_lines()`, and `principal_curvature_map` (a vertex map of
+///        `Principal_curvatures<GeomTraits>`): when given, it is used as is
+/// \return the lines, strongest first
+template <typename TriangleMesh, typename EdgeIsFeatureMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Feature_lines<TriangleMesh>
+detect_feature_lines(const TriangleMesh& tm, EdgeIsFeatureMap edge_is_feature,
+                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  Feature_lines<TriangleMesh> lines;
+  if constexpr(is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
+  {
+    auto cmap = get(CGAL::dynamic_vertex_property_t<Principal_curvatures<GT> >(), tm);
+    estimate_principal_curvatures(tm, cmap, np);
+    lines = detect_crest_lines(tm, cmap, np);
+  }
+  else
+    lines = detect_crest_lines(tm, get_parameter(np, internal_np::principal_curvature_map), np);
+  mark_feature_edges(tm, lines, edge_is_feature);
+  return lines;
+}
+
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_FEATURE_SEGMENTATION_CREST_LINES_H
