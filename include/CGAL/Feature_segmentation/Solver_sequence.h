@@ -90,6 +90,29 @@ public:
         Greedy_additive_edge_contraction(),
         Kernighan_lin_with_joins(number_of_iterations, epsilon))
   {}
+
+  /*!
+    computes a clustering of `g`; same result as the sequence of the two solvers.
+
+    \param g the graph.
+    \param labels ignored on entry; on exit, the cluster of every node, normalised as by
+           `normalize_labels()`.
+    \return the number of clusters.
+  */
+  std::size_t operator()(const Correlation_clustering_graph& g,
+                         std::vector<std::size_t>& labels) const
+  {
+    // Same as Solver_sequence::operator(), but both stages share one adjacency.
+    internal::Simple_adjacency adj;
+    internal::build_simple_adjacency(g, adj);
+    internal::Greedy_additive_edge_contraction_impl gaec;
+    gaec.run(adj, labels);
+    normalize_labels(labels);
+    internal::Kernighan_lin_with_joins_impl klj(second().number_of_iterations(),
+                                                second().epsilon());
+    klj.run(adj, labels);
+    return normalize_labels(labels);
+  }
 };
 
 } // namespace Feature_segmentation

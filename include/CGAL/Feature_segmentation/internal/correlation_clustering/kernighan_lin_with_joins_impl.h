@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The work behind Kernighan_lin_with_joins: cluster bookkeeping (labels and member lists
-// that support O(1) moves), the Kernighan-Lin move sequence between two clusters, and the
+// The work behind Kernighan_lin_with_joins: cluster bookkeeping (labels, and member lists
+// as intrusive linked lists over node arrays, so that moves are O(1) and nothing is
+// allocated per cluster), the Kernighan-Lin move sequence between two clusters, and the
 // rounds that revisit only the clusters changed in the previous round.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CORRELATION_CLUSTERING_KERNIGHAN_LIN_WITH_JOINS_IMPL_H
@@ -42,7 +43,8 @@ public:
       m_label[i] = Cc_index(labels[i]);
     const double input_cost = cost();
 
-    m_position.resize(n);
+    m_next.resize(n);
+    m_previous.resize(n);
     m_gain.resize(n);
     m_stamp.assign(n, 0);
     m_sequence = 0;
@@ -54,14 +56,14 @@ public:
 
     for(std::size_t round = 0; round < m_number_of_iterations; ++round)
     {
-      const std::size_t k = m_members.size();
+      const std::size_t k = m_head.size();
       m_changed_next.assign(k, 0);
       collect_pairs();
 
       double improvement = 0.;
       for(const std::pair<Cc_index, Cc_index>& pair : m_pairs)
       {
-        if(m_members[pair.first].empty() || m_members[pair.second].empty())
+        if(m_size[pair.first] == 0 || m_size[pair.second] == 0)
           continue;
         const double gain = improve_pair(pair.first, pair.second);
         if(gain > 0.)
@@ -75,7 +77,7 @@ public:
       // clusters whose members changed since the last attempt.
       for(Cc_index a = 0; a < Cc_index(k); ++a)
       {
-        if(!(m_changed[a] || m_changed_next[a]) || m_members[a].size() < 2)
+        if(!(m_changed[a] || m_changed_next[a]) || m_size[a] < 2)
           continue;
         const double gain = split(a);
         if(gain > 0.)
@@ -114,13 +116,12 @@ private:
   void split_into_connected_components()
   {
     const std::size_t n = m_label.size();
-    const Cc_index none = Cc_index(-1);
-    m_new_label.assign(n, none);
+    m_new_label.assign(n, none());
     m_changed.clear();
     Cc_index k = 0;
     for(std::size_t s = 0; s < n; ++s)
     {
-      if(m_new_label[s] != none)
+      if(m_new_label[s] != none())
         continue;
       const Cc_index old_label = m_label[s];
       m_new_label[s] = k;
@@ -132,7 +133,7 @@ private:
         for(std::size_t j = m_adj->begin(x); j < m_adj->end(x); ++j)
         {
           const Cc_index y = m_adj->neighbors[j];
-          if(m_new_label[y] == none && m_label[y] == old_label)
+          if(m_new_label[y] == none() && m_label[y] == old_label)
           {
             m_new_label[y] = k;
             m_queue.push_back(y);
@@ -144,29 +145,25 @@ private:
     }
     m_label.swap(m_new_label);
 
-    m_members.resize(k);
-    for(std::vector<Cc_index>& members : m_members)
-      members.clear();
-    for(std::size_t x = 0; x < n; ++x)
-    {
-      std::vector<Cc_index>& members = m_members[m_label[x]];
-      m_position[x] = Cc_index(members.size());
-      members.push_back(Cc_index(x));
-    }
+    m_head.assign(k, none());
+    m_size.assign(k, 0);
+    // Pushing in decreasing order lists the members of each cluster in increasing order.
+    for(std::size_t x = n; x-- > 0;)
+      push_front(Cc_index(x), m_label[x]);
   }
 
   // Pairs of adjacent clusters of which at least one changed in the previous round, each
   // pair once, in an order that depends only on the labelling.
   void collect_pairs()
   {
-    const std::size_t k = m_members.size();
+    const std::size_t k = m_head.size();
     m_pairs.clear();
     m_pair_mark.assign(k, Cc_index(-1));
     for(Cc_index a = 0; a < Cc_index(k); ++a)
     {
       if(!m_changed[a])
         continue;
-      for(Cc_index x : m_members[a])
+      for(Cc_index x = m_head[a]; x != none(); x = m_next[x])
         for(std::size_t j = m_adj->begin(x); j < m_adj->end(x); ++j)
         {
           const Cc_index b = m_label[m_adj->neighbors[j]];
@@ -200,11 +197,11 @@ private:
   // Applies it if it improves by more than epsilon; returns the applied gain (or 0).
   double improve_pair(Cc_index a, Cc_index b)
   {
-    const Cc_index small = m_members[a].size() <= m_members[b].size() ? a : b;
+    const Cc_index small = m_size[a] <= m_size[b] ? a : b;
     const Cc_index large = small == a ? b : a;
     begin_sequence();
     double join_gain = 0.;
-    for(Cc_index x : m_members[small])
+    for(Cc_index x = m_head[small]; x != none(); x = m_next[x])
       for(std::size_t j = m_adj->begin(x); j < m_adj->end(x); ++j)
       {
         const Cc_index y = m_adj->neighbors[j];
@@ -222,15 +219,20 @@ private:
     if(join_gain > sequence_gain && join_gain > m_epsilon)
     {
       undo_moves(0);
-      std::vector<Cc_index>& from = m_members[small];
-      std::vector<Cc_index>& to = m_members[large];
-      for(Cc_index x : from)
+      // Splice the list of the small cluster in front of the list of the large one.
+      Cc_index last = m_head[small];
+      m_label[last] = large;
+      while(m_next[last] != none())
       {
-        m_label[x] = large;
-        m_position[x] = Cc_index(to.size());
-        to.push_back(x);
+        last = m_next[last];
+        m_label[last] = large;
       }
-      from.clear();
+      m_next[last] = m_head[large];
+      m_previous[m_head[large]] = last;
+      m_head[large] = m_head[small];
+      m_head[small] = none();
+      m_size[large] += m_size[small];
+      m_size[small] = 0;
       return join_gain;
     }
     if(kept > 0 && sequence_gain > m_epsilon)
@@ -245,10 +247,11 @@ private:
   // Kernighan-Lin moves from cluster a to a new, empty cluster.
   double split(Cc_index a)
   {
-    const Cc_index b = Cc_index(m_members.size());
-    m_members.emplace_back();
+    const Cc_index b = Cc_index(m_head.size());
+    m_head.push_back(none());
+    m_size.push_back(0);
     begin_sequence();
-    for(Cc_index x : m_members[a])
+    for(Cc_index x = m_head[a]; x != none(); x = m_next[x])
       add_candidate(x);
 
     const std::size_t kept = run_sequence(a, b);
@@ -258,7 +261,8 @@ private:
       return m_prefix_gain;
     }
     undo_moves(0);
-    m_members.pop_back();
+    m_head.pop_back();
+    m_size.pop_back();
     return 0.;
   }
 
@@ -385,6 +389,29 @@ private:
 
   static std::size_t linear_scan_threshold() { return 48; }
 
+  static Cc_index none() { return Cc_index(-1); }
+
+  void push_front(Cc_index x, Cc_index cluster)
+  {
+    m_previous[x] = none();
+    m_next[x] = m_head[cluster];
+    if(m_head[cluster] != none())
+      m_previous[m_head[cluster]] = x;
+    m_head[cluster] = x;
+    ++m_size[cluster];
+  }
+
+  void unlink(Cc_index x, Cc_index cluster)
+  {
+    if(m_previous[x] != none())
+      m_next[m_previous[x]] = m_next[x];
+    else
+      m_head[cluster] = m_next[x];
+    if(m_next[x] != none())
+      m_previous[m_next[x]] = m_previous[x];
+    --m_size[cluster];
+  }
+
   void undo_moves(std::size_t length)
   {
     for(std::size_t i = length; i < m_moves.size(); ++i)
@@ -397,14 +424,8 @@ private:
   {
     for(const Move& move : m_moves)
     {
-      const Cc_index x = move.node;
-      std::vector<Cc_index>& from_members = m_members[move.from];
-      const Cc_index last = from_members.back();
-      from_members[m_position[x]] = last;
-      m_position[last] = m_position[x];
-      from_members.pop_back();
-      m_position[x] = Cc_index(m_members[m_label[x]].size());
-      m_members[m_label[x]].push_back(x);
+      unlink(move.node, move.from);
+      push_front(move.node, m_label[move.node]);
     }
     m_moves.clear();
   }
@@ -415,8 +436,10 @@ private:
 
   std::vector<Cc_index> m_label;
   std::vector<Cc_index> m_new_label;
-  std::vector<Cc_index> m_position;
-  std::vector<std::vector<Cc_index> > m_members;
+  std::vector<Cc_index> m_next;     // next member of the same cluster
+  std::vector<Cc_index> m_previous; // previous member of the same cluster
+  std::vector<Cc_index> m_head;     // first member of each cluster
+  std::vector<Cc_index> m_size;     // number of members of each cluster
   std::vector<char> m_changed;
   std::vector<char> m_changed_next;
   std::vector<std::pair<Cc_index, Cc_index> > m_pairs;
