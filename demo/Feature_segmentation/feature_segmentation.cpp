@@ -151,7 +151,8 @@ Options parse_command_line(int argc, char** argv)
     auto take_value = [&]() -> std::string {
       if(has_inline_value)
         return value;
-      if(i + 1 >= argc)
+      // "--rings --quiet" is a forgotten value, not a folder or number named "--quiet".
+      if(i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
         throw Usage_error(arg + " expects a value");
       return argv[++i];
     };

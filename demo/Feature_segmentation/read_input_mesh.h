@@ -27,7 +27,9 @@
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -112,6 +114,51 @@ bool is_degenerate_polygon(const std::vector<Point>& points, const Polygon& poly
       return false;
   return true;
 }
+
+// CGAL's text readers stop at "nan" or "inf" and only return `false`; this finds the
+// token, so that the message names the real cause. Returns 0 if there is none.
+inline std::size_t line_of_non_finite_token(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string text;
+  std::size_t line_number = 0;
+  while(std::getline(in, text))
+  {
+    ++line_number;
+    std::istringstream words(text);
+    std::string word;
+    while(words >> word)
+    {
+      std::transform(word.begin(), word.end(), word.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if(!word.empty() && (word[0] == '-' || word[0] == '+'))
+        word.erase(0, 1);
+      if(word == "nan" || word == "inf" || word == "infinity" || word.rfind("nan(", 0) == 0)
+        return line_number;
+    }
+  }
+  return 0;
+}
+
+// CGAL's readers print some diagnostics of their own on std::cerr; the program's
+// contract is one line per error, so they are silenced while a reader runs.
+class Silence_standard_error
+{
+public:
+  Silence_standard_error() : m_cerr(std::cerr.rdbuf(m_sink.rdbuf())), m_clog(std::clog.rdbuf(m_sink.rdbuf())) {}
+  ~Silence_standard_error()
+  {
+    std::cerr.rdbuf(m_cerr);
+    std::clog.rdbuf(m_clog);
+  }
+  Silence_standard_error(const Silence_standard_error&) = delete;
+  Silence_standard_error& operator=(const Silence_standard_error&) = delete;
+
+private:
+  std::ostringstream m_sink;
+  std::streambuf* m_cerr;
+  std::streambuf* m_clog;
+};
 
 inline std::string face_name(std::size_t f) { return "face " + std::to_string(f); }
 
@@ -239,15 +286,26 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh)
   bool ok = false;
   try
   {
+    internal::Silence_standard_error silence;
     ok = CGAL::IO::read_polygon_soup(path, points, polygons);
+  }
+  catch(const std::bad_alloc&)
+  {
+    throw Input_error(path + ": cannot be read as " + report.format +
+                      " (out of memory: are the element counts of the header right?)");
   }
   catch(const std::exception& e)
   {
     throw Input_error(path + ": cannot be read as " + report.format + " (" + e.what() + ")");
   }
   if(!ok)
+  {
+    if(const std::size_t line = internal::line_of_non_finite_token(path))
+      throw Input_error(path + ": line " + std::to_string(line) +
+                        " has a NaN or infinite coordinate");
     throw Input_error(path + ": cannot be read as " + report.format +
                       " (malformed or truncated file)");
+  }
   report.number_of_file_points = points.size();
   report.number_of_file_faces = polygons.size();
 
