@@ -25,6 +25,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -137,6 +139,39 @@ inline std::size_t line_of_non_finite_token(const std::string& path)
         return line_number;
     }
   }
+  return 0;
+}
+
+// CGAL's STL reader merges equal points through an ordered map, where a NaN compares
+// equal to any point: a NaN vertex of a binary STL file would silently become another
+// vertex. The coordinates of a binary file are therefore checked before reading.
+// Returns the 1-based number of the first triangle with a non-finite vertex, else 0.
+inline std::size_t binary_stl_non_finite_triangle(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  char header[84];
+  if(!in.read(header, 84))
+    return 0;
+  const auto le32 = [](const char* b) {
+    return std::uint32_t(static_cast<unsigned char>(b[0])) |
+           std::uint32_t(static_cast<unsigned char>(b[1])) << 8 |
+           std::uint32_t(static_cast<unsigned char>(b[2])) << 16 |
+           std::uint32_t(static_cast<unsigned char>(b[3])) << 24;
+  };
+  const std::uint64_t count = le32(header + 80);
+  std::error_code ec;
+  if(std::filesystem::file_size(path, ec) != 84 + 50 * count || ec)
+    return 0; // not a binary STL file (an ASCII one is checked by its reader)
+  char record[50];
+  for(std::uint64_t t = 0; t < count && in.read(record, 50); ++t)
+    for(int k = 3; k < 12; ++k) // 3 floats of normal, then 3 points
+    {
+      const std::uint32_t bits = le32(record + 4 * k);
+      float x;
+      std::memcpy(&x, &bits, sizeof(float));
+      if(!std::isfinite(x))
+        return static_cast<std::size_t>(t + 1);
+    }
   return 0;
 }
 
@@ -280,6 +315,11 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh)
                       (report.format.empty() ? std::string("(no extension)")
                                              : "'." + report.format + "'") +
                       " (expected .off, .obj, .ply or .stl)");
+
+  if(report.format == "stl")
+    if(const std::size_t t = internal::binary_stl_non_finite_triangle(path))
+      throw Input_error(path + ": triangle " + std::to_string(t) +
+                        " has a NaN or infinite coordinate");
 
   std::vector<Point> points;
   std::vector<Polygon> polygons;

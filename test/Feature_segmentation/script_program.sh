@@ -171,6 +171,61 @@ check "quad mesh: notice about triangulation" grep -q '^notice: .*triangulated 5
 check "quad mesh: 10 triangles" [ "$(json_int "$work/quad/summary.json" mesh faces)" = 10 ]
 check "quad mesh: 4 border edges" [ "$(json_int "$work/quad/summary.json" mesh border_edges)" = 4 ]
 
+# ---- the other formats -------------------------------------------------------------------
+# fandisk as OBJ: same mesh, same feature lines as from the OFF file.
+awk -v V="$header_vertices" '
+  NR > 4 && NR <= 4 + 3 * V { c[(NR - 5) % 3] = $1; if ((NR - 4) % 3 == 0) print "v", c[0], c[1], c[2] }
+  NR > 4 + 3 * V { if (k == 0) { k = $1; s = "f" } else { s = s " " ($1 + 1); if (--k == 0) print s } }
+' "$work/fandisk.tokens" > "$work/fandisk.obj"
+run obj "$work/fandisk.obj" --output-dir "$work/obj" --quiet
+check "fandisk.obj: exit status 0 (stderr: $(tail -n 1 "$work/obj.err"))" [ "$rc" -eq 0 ]
+check "fandisk.obj: same vertex count as the OFF file" \
+  [ "$(json_int "$work/obj/summary.json" mesh vertices)" = "$header_vertices" ]
+check "fandisk.obj: same feature lines as the OFF file" \
+  cmp -s "$work/obj/feature_lines.polylines.txt" "$out/feature_lines.polylines.txt"
+
+# Binary STL, written byte by byte: 80-byte header, triangle count, then per triangle a
+# normal, three points (little-endian floats) and 2 attribute bytes.
+f0='\x00\x00\x00\x00'; f1='\x00\x00\x80\x3f'; fnan='\x00\x00\xc0\x7f'
+stl_triangle() { printf "$f0$f0$f0$1$2$3"'\x00\x00'; }
+{ head -c 80 /dev/zero; printf '\x04\x00\x00\x00'
+  stl_triangle "$f0$f0$f0" "$f0$f1$f0" "$f1$f0$f0"
+  stl_triangle "$f0$f0$f0" "$f0$f0$f1" "$f0$f1$f0"
+  stl_triangle "$f0$f0$f0" "$f1$f0$f0" "$f0$f0$f1"
+  stl_triangle "$f1$f0$f0" "$f0$f1$f0" "$f0$f0$f1"; } > "$work/tetrahedron.stl"
+{ head -c 80 /dev/zero; printf '\x02\x00\x00\x00'
+  stl_triangle "$f0$f0$f0" "$f0$f1$f0" "$f1$f0$f0"
+  stl_triangle "$f0$f0$f0" "$f0$f0$fnan" "$f0$f1$f0"; } > "$work/nan_binary.stl"
+run stl "$work/tetrahedron.stl" --output-dir "$work/stl" --quiet
+check "tetrahedron.stl: exit status 0 (stderr: $(tail -n 1 "$work/stl.err"))" [ "$rc" -eq 0 ]
+check "tetrahedron.stl: 4 vertices (shared points merged)" \
+  [ "$(json_int "$work/stl/summary.json" mesh vertices)" = 4 ]
+check "tetrahedron.stl: closed (0 border edges)" \
+  [ "$(json_int "$work/stl/summary.json" mesh border_edges)" = 0 ]
+
+cat > "$work/tetrahedron.ply" <<'EOF'
+ply
+format ascii 1.0
+element vertex 4
+property double x
+property double y
+property double z
+element face 4
+property list uchar int vertex_indices
+end_header
+0 0 0
+1 0 0
+0 1 0
+0 0 1
+3 0 2 1
+3 0 1 3
+3 0 3 2
+3 1 2 3
+EOF
+run ply "$work/tetrahedron.ply" --output-dir "$work/ply" --quiet
+check "tetrahedron.ply: exit status 0 (stderr: $(tail -n 1 "$work/ply.err"))" [ "$rc" -eq 0 ]
+check "tetrahedron.ply: 4 faces" [ "$(json_int "$work/ply/summary.json" mesh faces)" = 4 ]
+
 # ---- bad input ----------------------------------------------------------------------------
 bad="$work/bad"
 mkdir -p "$bad/a_directory.off"
@@ -237,6 +292,7 @@ expect_error empty_mesh             1 'contains no faces'           "$bad/empty.
 expect_error nan_coordinate         1 'NaN or infinite'             "$bad/nan.off"
 expect_error inf_coordinate         1 'NaN or infinite'             "$bad/inf.off"
 expect_error inf_coordinate_obj     1 'NaN or infinite'             "$bad/inf.obj"
+expect_error nan_coordinate_stl     1 'triangle 2 has a NaN'        "$work/nan_binary.stl"
 expect_error non_manifold_edge      1 'shared by 3 faces'           "$bad/non_manifold_edge.off"
 expect_error folded_faces           1 'overlap'                     "$bad/folded.off"
 expect_error degenerate_triangle    1 'degenerate'                  "$bad/degenerate.off"
