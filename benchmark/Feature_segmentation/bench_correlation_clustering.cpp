@@ -5,8 +5,11 @@
 // solvers (half of the edges attract, half repel, so GAEC leaves tens of thousands of
 // clusters for KLj to refine). Prints a table and writes CSV for the manual.
 //
+// --bias b shifts all weights by b: with b = 0.5, one cluster covers most of the grid,
+// the workload of a mesh with large smooth patches.
+//
 // Usage: bench_correlation_clustering [--sizes 500x400,1000x1000] [--seeds 1,2]
-//          [--repeat 3] [--singletons] [--csv bench_correlation_clustering.csv]
+//          [--bias 0] [--repeat 3] [--singletons] [--csv bench_correlation_clustering.csv]
 
 #include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
 #include <CGAL/Feature_segmentation/Greedy_additive_edge_contraction.h>
@@ -35,6 +38,7 @@ struct Options
   std::vector<std::pair<std::size_t, std::size_t> > sizes{{500, 400}, {1000, 1000}};
   std::vector<unsigned> seeds{1};
   std::size_t repeat = 3;
+  double bias = 0.;
   bool singletons = false;
   std::string csv = "bench_correlation_clustering.csv";
 };
@@ -85,6 +89,8 @@ bool parse_options(int argc, char** argv, Options& options)
     }
     else if(arg == "--repeat" && has_value)
       options.repeat = std::max<std::size_t>(1, std::size_t(std::atol(argv[++i])));
+    else if(arg == "--bias" && has_value)
+      options.bias = std::atof(argv[++i]);
     else if(arg == "--csv" && has_value)
       options.csv = argv[++i];
     else if(arg == "--singletons")
@@ -97,10 +103,11 @@ bool parse_options(int argc, char** argv, Options& options)
 
 // Weights from the raw 32-bit Mersenne Twister output, so that every platform builds the
 // same graph (std::uniform_real_distribution is implementation-defined).
-FS::Correlation_clustering_graph grid_graph(std::size_t width, std::size_t height, unsigned seed)
+FS::Correlation_clustering_graph grid_graph(std::size_t width, std::size_t height, unsigned seed,
+                                            double bias)
 {
   std::mt19937 rng(seed);
-  auto weight = [&rng]() { return -1. + 2. * (double(rng()) / 4294967296.0); };
+  auto weight = [&rng, bias]() { return bias - 1. + 2. * (double(rng()) / 4294967296.0); };
   FS::Correlation_clustering_graph g(width * height);
   g.reserve_edges(2 * width * height);
   for(std::size_t y = 0; y < height; ++y)
@@ -156,14 +163,15 @@ int main(int argc, char** argv)
   if(!parse_options(argc, argv, options))
   {
     std::cerr << "usage: " << argv[0]
-              << " [--sizes WxH[,WxH...]] [--seeds S[,S...]] [--repeat R] [--singletons]"
+              << " [--sizes WxH[,WxH...]] [--seeds S[,S...]] [--bias B] [--repeat R] [--singletons]"
                  " [--csv FILE]\n";
     return 1;
   }
 
   const std::string cpu = cpu_name();
   std::cout << "CPU: " << cpu << "\n"
-            << "Times: wall clock of one thread, min and median of " << options.repeat
+            << "Weights: uniform in [" << options.bias - 1. << ", " << options.bias + 1.
+            << ").\nTimes: wall clock of one thread, min and median of " << options.repeat
             << " runs; objective = cut cost (Eq. 1), lower is better.\n"
             << "KLj (from GAEC) times the second stage alone, starting from GAEC's labels.\n\n";
 
@@ -177,7 +185,7 @@ int main(int argc, char** argv)
   for(const auto& size : options.sizes)
     for(unsigned seed : options.seeds)
     {
-      const FS::Correlation_clustering_graph g = grid_graph(size.first, size.second, seed);
+      const FS::Correlation_clustering_graph g = grid_graph(size.first, size.second, seed, options.bias);
       const std::string grid = std::to_string(size.first) + "x" + std::to_string(size.second);
 
       std::vector<std::size_t> gaec_labels, labels;
@@ -216,10 +224,10 @@ int main(int argc, char** argv)
     std::cerr << "error: cannot write " << options.csv << "\n";
     return 1;
   }
-  csv << "grid,nodes,edges,seed,solver,min_seconds,median_seconds,objective,clusters,cpu\n";
+  csv << "grid,bias,nodes,edges,seed,solver,min_seconds,median_seconds,objective,clusters,cpu\n";
   csv.precision(10);
   for(const Row& row : rows)
-    csv << row.grid << ',' << row.nodes << ',' << row.edges << ',' << row.seed << ','
+    csv << row.grid << ',' << options.bias << ',' << row.nodes << ',' << row.edges << ',' << row.seed << ','
         << row.solver << ',' << row.min_seconds << ',' << row.median_seconds << ','
         << row.objective << ',' << row.clusters << ",\"" << cpu << "\"\n";
   std::cout << "\nwrote " << options.csv << "\n";

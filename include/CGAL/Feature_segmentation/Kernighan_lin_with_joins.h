@@ -33,6 +33,9 @@ namespace Feature_segmentation {
   decreases the cut cost most (or increases it least), each node at most once, and keeps
   the best prefix of the sequence. It compares this with joining the two clusters and
   applies the better of the two if it decreases the cut cost by more than `epsilon()`.
+  A sequence stops early after `moves_without_improvement()` moves that did not improve
+  its best prefix; without this bound, a cluster covering most of the graph would be
+  swept entirely for each of its neighbours.
   Then, for every cluster, it runs the same kind of sequence towards a new, empty
   cluster, which is how new clusters appear. Clusters that a move disconnected are split
   into their connected components. A round only revisits pairs of clusters of which at
@@ -57,10 +60,14 @@ public:
     \param number_of_iterations the maximal number of rounds.
     \param epsilon the smallest decrease of the cut cost that counts as an improvement;
            it keeps rounding errors from being taken for improvements.
+    \param moves_without_improvement the number of consecutive moves that do not improve
+           the best prefix after which a move sequence stops (at least 1).
   */
   explicit Kernighan_lin_with_joins(std::size_t number_of_iterations = 100,
-                                    double epsilon = 1e-9)
-    : m_number_of_iterations(number_of_iterations), m_epsilon(epsilon)
+                                    double epsilon = 1e-9,
+                                    std::size_t moves_without_improvement = 100)
+    : m_number_of_iterations(number_of_iterations), m_epsilon(epsilon),
+      m_moves_without_improvement(moves_without_improvement)
   {}
 
   /// returns the maximal number of rounds.
@@ -71,6 +78,10 @@ public:
   double epsilon() const { return m_epsilon; }
   /// sets the smallest decrease of the cut cost that counts as an improvement.
   void set_epsilon(double epsilon) { m_epsilon = epsilon; }
+  /// returns the number of non-improving moves after which a move sequence stops.
+  std::size_t moves_without_improvement() const { return m_moves_without_improvement; }
+  /// sets the number of non-improving moves after which a move sequence stops.
+  void set_moves_without_improvement(std::size_t n) { m_moves_without_improvement = n; }
 
   /*!
     improves the partition `labels` of `g`.
@@ -97,7 +108,8 @@ public:
 
     internal::Simple_adjacency adj;
     internal::build_simple_adjacency(g, adj);
-    internal::Kernighan_lin_with_joins_impl impl(m_number_of_iterations, m_epsilon);
+    internal::Kernighan_lin_with_joins_impl impl(m_number_of_iterations, m_epsilon,
+                                                 m_moves_without_improvement);
     impl.run(adj, labels);
     return normalize_labels(labels);
   }
@@ -105,6 +117,7 @@ public:
 private:
   std::size_t m_number_of_iterations;
   double m_epsilon;
+  std::size_t m_moves_without_improvement;
 };
 
 } // namespace Feature_segmentation

@@ -85,10 +85,11 @@ class Default_correlation_clustering_solver
 public:
   /// creates the solver; the parameters are those of `Kernighan_lin_with_joins`.
   explicit Default_correlation_clustering_solver(std::size_t number_of_iterations = 100,
-                                                 double epsilon = 1e-9)
+                                                 double epsilon = 1e-9,
+                                                 std::size_t moves_without_improvement = 100)
     : Solver_sequence<Greedy_additive_edge_contraction, Kernighan_lin_with_joins>(
         Greedy_additive_edge_contraction(),
-        Kernighan_lin_with_joins(number_of_iterations, epsilon))
+        Kernighan_lin_with_joins(number_of_iterations, epsilon, moves_without_improvement))
   {}
 
   /*!
@@ -109,7 +110,8 @@ public:
     gaec.run(adj, labels);
     normalize_labels(labels);
     internal::Kernighan_lin_with_joins_impl klj(second().number_of_iterations(),
-                                                second().epsilon());
+                                                second().epsilon(),
+                                                second().moves_without_improvement());
     klj.run(adj, labels);
     return normalize_labels(labels);
   }

@@ -12,6 +12,7 @@
 #include <CGAL/Feature_segmentation/internal/correlation_clustering/Lazy_max_heap.h>
 #include <CGAL/Feature_segmentation/internal/correlation_clustering/Simple_adjacency.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -23,8 +24,10 @@ namespace internal {
 class Kernighan_lin_with_joins_impl
 {
 public:
-  Kernighan_lin_with_joins_impl(std::size_t number_of_iterations, double epsilon)
-    : m_number_of_iterations(number_of_iterations), m_epsilon(epsilon)
+  Kernighan_lin_with_joins_impl(std::size_t number_of_iterations, double epsilon,
+                                std::size_t moves_without_improvement)
+    : m_number_of_iterations(number_of_iterations), m_epsilon(epsilon),
+      m_moves_without_improvement((std::max)(std::size_t(1), moves_without_improvement))
   {}
 
   // `labels` holds a partition (any label values smaller than labels.size() + 1 after
@@ -348,6 +351,10 @@ private:
         m_prefix_gain = total;
         best_length = m_moves.size();
       }
+      // Without this bound, a large cluster would be swept entirely for each of its
+      // neighbours, which is quadratic when one cluster covers most of the graph.
+      if(m_moves.size() - best_length >= m_moves_without_improvement)
+        break;
 
       for(std::size_t j = m_adj->begin(x); j < m_adj->end(x); ++j)
       {
@@ -433,6 +440,7 @@ private:
   const Simple_adjacency* m_adj = nullptr;
   std::size_t m_number_of_iterations;
   double m_epsilon;
+  std::size_t m_moves_without_improvement;
 
   std::vector<Cc_index> m_label;
   std::vector<Cc_index> m_new_label;
