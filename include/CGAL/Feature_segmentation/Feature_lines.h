@@ -32,6 +32,7 @@ enum class Feature_line_type
 template <typename TriangleMesh>
 struct Feature_point
 {
+  /// the halfedge type of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   halfedge_descriptor halfedge; ///< the edge, as one of its halfedges
   double t = 0.;                ///< barycentric position along `halfedge`, in [0, 1]

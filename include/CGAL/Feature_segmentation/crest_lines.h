@@ -122,6 +122,8 @@ detect_crest_lines(const TriangleMesh& tm, VertexCurvatureMap curvature_map,
 /// `edge_is_feature`.
 ///
 /// \tparam EdgeIsFeatureMap a `ReadWritePropertyMap` from `edge_descriptor` to `bool`
+/// \param tm the mesh (checked with `check_input_mesh()`)
+/// \param edge_is_feature the output: `true` on the feature edges, `false` elsewhere
 /// \param np the named parameters of `estimate_principal_curvatures()` and
 ///        `detect_crest_lines()`, and `principal_curvature_map` (a vertex map of
 ///        `Principal_curvatures<GeomTraits>`): when given, it is used as is

@@ -31,6 +31,7 @@ namespace Feature_segmentation {
 class Invalid_input : public std::invalid_argument
 {
 public:
+  /// An exception with the one-line message `what`.
   explicit Invalid_input(const std::string& what) : std::invalid_argument(what) {}
 };
 
@@ -52,6 +53,7 @@ struct Mesh_check_report
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \param tm the mesh
+/// \param allow_degenerate_faces whether zero-area faces are accepted
 /// \param np an optional sequence of named parameters among: `vertex_point_map`,
 ///        `geom_traits`
 template <typename TriangleMesh,

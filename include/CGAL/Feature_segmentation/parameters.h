@@ -18,9 +18,11 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal_np {
 
+#ifndef DOXYGEN_RUNNING
 #define FS_add_named_parameter(X, Y, Z) enum X { Y };
 #include <CGAL/Feature_segmentation/internal/parameters_interface.h>
 #undef FS_add_named_parameter
+#endif
 
 } // namespace internal_np
 
@@ -31,6 +33,7 @@ namespace internal_np {
 template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
 struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 {
+  /// \cond SKIP_IN_MANUAL
   typedef CGAL::Named_function_parameters<T, Tag, Base> Cgal_pack;
   typedef Named_function_parameters<T, Tag, Base> self;
 
@@ -38,6 +41,7 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_function_parameters(const T& v) : Cgal_pack(v) {}
   Named_function_parameters(const T& v, const Base& b) : Cgal_pack(v, b) {}
 
+#ifndef DOXYGEN_RUNNING
 #define CGAL_add_named_parameter(X, Y, Z)                                        \
   template <typename K>                                                          \
   Named_function_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const   \
@@ -55,6 +59,8 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   }
 #include <CGAL/Feature_segmentation/internal/parameters_interface.h>
 #undef FS_add_named_parameter
+#endif
+  /// \endcond
 };
 
 /// \ingroup PkgFeatureSegmentationNamedParameters
@@ -69,6 +75,7 @@ using CGAL::parameters::get_parameter_reference;
 using CGAL::parameters::choose_parameter;
 using CGAL::parameters::is_default_parameter;
 
+#ifndef DOXYGEN_RUNNING
 #define CGAL_add_named_parameter(X, Y, Z)                                        \
   template <typename K>                                                          \
   Named_function_parameters<K, CGAL::internal_np::X> Z(const K& k)               \
@@ -86,6 +93,7 @@ using CGAL::parameters::is_default_parameter;
   }
 #include <CGAL/Feature_segmentation/internal/parameters_interface.h>
 #undef FS_add_named_parameter
+#endif
 
 } // namespace parameters
 } // namespace Feature_segmentation

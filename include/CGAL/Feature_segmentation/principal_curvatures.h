@@ -32,8 +32,8 @@ namespace Feature_segmentation {
 template <typename GeomTraits>
 struct Principal_curvatures
 {
-  typedef typename GeomTraits::FT FT;
-  typedef typename GeomTraits::Vector_3 Vector_3;
+  typedef typename GeomTraits::FT FT;             ///< number type
+  typedef typename GeomTraits::Vector_3 Vector_3; ///< vector type
 
   FT k1 = FT(0);       ///< the principal curvature of largest absolute value
   FT k2 = FT(0);       ///< the other principal curvature, `|k2| <= |k1|`
