@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What the segmentation precomputes once per mesh and feature set: indices, curvature
+// tensors, feature edges and points, the Similarity and Award terms of every edge, and
+// the vertex graph G. Solving for an alpha (or a per-edge alpha) only recombines the
+// terms into weights and runs the solver; the free function and the editing class share
+// this structure.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_SEGMENTATION_DATA_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_SEGMENTATION_DATA_H
+
+#include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
+#include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/input_checks.h>
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/edge_weights_impl.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+// Every option of the segmentation, parsed once from the named parameters.
+struct Segmentation_options
+{
+  double alpha = 0.6;
+  double gamma = 0.05;
+
+  void check() const
+  {
+    if(!std::isfinite(alpha))
+      throw Invalid_input("alpha must be a finite number (got " + std::to_string(alpha) + ")");
+    if(!(gamma >= 0) || !std::isfinite(gamma))
+      throw Invalid_input("gamma must be a finite number >= 0 (got " + std::to_string(gamma) + ")");
+  }
+};
+
+template <typename TriangleMesh>
+class Segmentation_data
+{
+public:
+  typedef Mesh_indexing<TriangleMesh> Indexing;
+  typedef Eigen::Vector3d Vec3;
+
+  explicit Segmentation_data(const TriangleMesh& tm) : idx(tm) {}
+
+  // Positions and curvatures, read through the user's maps once.
+  template <typename VPM, typename CurvatureMap>
+  void set_geometry(VPM vpm, CurvatureMap cmap)
+  {
+    vin.resize(idx.number_of_vertices());
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for(std::size_t i = 0; i < vin.size(); ++i)
+    {
+      const auto v = idx.vertex_at(i);
+      const auto& p = get(vpm, v);
+      const auto c = get(cmap, v);
+      Vertex_tensor_input& x = vin[i];
+      x.p = Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      x.k1 = CGAL::to_double(c.k1);
+      x.k2 = CGAL::to_double(c.k2);
+      x.d1 = Vec3(CGAL::to_double(c.d1.x()), CGAL::to_double(c.d1.y()), CGAL::to_double(c.d1.z()));
+      x.d2 = Vec3(CGAL::to_double(c.d2.x()), CGAL::to_double(c.d2.y()), CGAL::to_double(c.d2.z()));
+      lo = lo.cwiseMin(x.p);
+      hi = hi.cwiseMax(x.p);
+    }
+    diagonal = vin.empty() ? 0. : (hi - lo).norm();
+    largest_side = vin.empty() ? 0. : (hi - lo).maxCoeff();
+  }
+
+  // Feature edges from an edge map, feature points from lines (may be empty).
+  template <typename EdgeIsFeatureMap>
+  void set_features(EdgeIsFeatureMap is_feature, const Feature_lines<TriangleMesh>& lines)
+  {
+    const TriangleMesh& tm = idx.mesh();
+    const std::size_t ne = idx.number_of_edges();
+    is_feature_edge.assign(ne, 0);
+    point_sum.assign(ne, Vec3::Zero());
+    point_count.assign(ne, 0);
+    for(std::size_t e = 0; e < ne; ++e)
+      is_feature_edge[e] = get(is_feature, idx.edge_at(e)) ? 1 : 0;
+    // the feature edges are the edges that contain a feature point (paper, 3.1)
+    for(const auto& l : lines.lines)
+      for(const auto& fp : l.points)
+      {
+        const std::size_t e = idx.edge_id(fp.halfedge);
+        point_sum[e] += (1 - fp.t) * vin[idx.id(source(fp.halfedge, tm))].p +
+                        fp.t * vin[idx.id(target(fp.halfedge, tm))].p;
+        ++point_count[e];
+        is_feature_edge[e] = 1;
+      }
+    number_of_feature_edges = std::size_t(std::count(is_feature_edge.begin(), is_feature_edge.end(), 1));
+  }
+
+  // Similarity and Award; the vertex graph's topology.
+  void compute_terms(double gamma)
+  {
+    // gamma (Eq. 5-6) multiplies a curvature, so it is given for curvatures measured on
+    // the mesh scaled so that the largest side of its bounding box is 1, as the authors'
+    // tool does before anything else: the result does not depend on the file's units.
+    terms.compute(idx, vin, is_feature_edge, point_sum, point_count, gamma, largest_side);
+    const TriangleMesh& tm = idx.mesh();
+    edge_vertices.resize(idx.number_of_edges());
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    {
+      auto h = halfedge(idx.edge_at(e), tm);
+      edge_vertices[e] = { idx.id(source(h, tm)), idx.id(target(h, tm)) };
+    }
+  }
+
+  // w(e) = Similarity(e) - alpha_e Award(e), Eq. 3.
+  double weight(std::size_t e, double alpha_e) const { return terms.similarity[e] - alpha_e * terms.award[e]; }
+
+  Correlation_clustering_graph graph(const std::vector<double>& alpha_e) const
+  {
+    Correlation_clustering_graph g(idx.number_of_vertices());
+    g.reserve_edges(edge_vertices.size());
+    for(std::size_t e = 0; e < edge_vertices.size(); ++e)
+      g.add_edge(edge_vertices[e].first, edge_vertices[e].second, weight(e, alpha_e[e]));
+    return g;
+  }
+
+  std::vector<double> default_alpha(double alpha) const
+  {
+    std::vector<double> a(is_feature_edge.size(), 0.);
+    for(std::size_t e = 0; e < a.size(); ++e) if(is_feature_edge[e]) a[e] = alpha;
+    return a;
+  }
+
+  Indexing idx;
+  std::vector<Vertex_tensor_input> vin;
+  double diagonal = 0;
+  double largest_side = 0;
+  std::vector<char> is_feature_edge;
+  std::vector<Vec3> point_sum;
+  std::vector<int> point_count;
+  std::size_t number_of_feature_edges = 0;
+  Edge_weight_terms<TriangleMesh> terms;
+  std::vector<std::pair<std::size_t, std::size_t> > edge_vertices;
+};
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_SEGMENTATION_DATA_H

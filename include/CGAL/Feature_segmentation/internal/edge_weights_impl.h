@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The work behind the edge weights (paper, Section 3.2, Eq. 3-6): dual vertices, the
+// per-triangle anisotropic tensors and the two lengths of every edge's dual segment,
+// Similarity (anisotropic metric) and Award (Euclidean metric). They depend on the mesh,
+// the curvatures, the feature points and gamma, never on alpha: an alpha edit only
+// recombines them, w(e) = Similarity(e) - alpha_e * Award(e).
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_EDGE_WEIGHTS_IMPL_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_EDGE_WEIGHTS_IMPL_H
+
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+// The anisotropic metric of one triangle, in an orthonormal basis (u, v) of its plane:
+// length^2 of a tangent vector x = (x.e1)^2 + lambda2 (x.e2)^2 (Eq. 4 and 6).
+struct Triangle_metric
+{
+  Eigen::Vector3d u = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(); // plane basis; zero if degenerate
+  Eigen::Vector2d e1 = Eigen::Vector2d(1, 0), e2 = Eigen::Vector2d(0, 1);   // metric eigenvectors
+  double lambda2 = 1.;
+  double anisotropy = 0.; // s = |k1| - |k2| of the triangle
+
+  bool is_degenerate() const { return u.squaredNorm() == 0; }
+  // Euclidean length of the projection of w on the plane
+  double euclidean(const Eigen::Vector3d& w) const
+  {
+    if(is_degenerate()) return w.norm();
+    return std::hypot(w.dot(u), w.dot(v));
+  }
+  double anisotropic(const Eigen::Vector3d& w) const
+  {
+    if(is_degenerate()) return w.norm();
+    const Eigen::Vector2d x(w.dot(u), w.dot(v));
+    const double a = x.dot(e1), b = x.dot(e2);
+    return std::sqrt(a * a + lambda2 * b * b);
+  }
+};
+
+// Inputs per vertex: position and curvature tensor pieces (k1, k2, d1, d2).
+struct Vertex_tensor_input
+{
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  double k1 = 0, k2 = 0;
+  Eigen::Vector3d d1 = Eigen::Vector3d::Zero(), d2 = Eigen::Vector3d::Zero();
+};
+
+template <typename TriangleMesh>
+class Edge_weight_terms
+{
+public:
+  typedef Mesh_indexing<TriangleMesh> Indexing;
+  typedef Eigen::Vector3d Vec3;
+
+  // `feature_points[e]`: sum and count of the feature points on edge e (count 0: none).
+  // `curvature_scale`: the length by which curvatures are multiplied before gamma applies.
+  void compute(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+               const std::vector<char>& is_feature_edge,
+               const std::vector<Vec3>& feature_point_sum, const std::vector<int>& feature_point_count,
+               double gamma, double curvature_scale)
+  {
+    const TriangleMesh& tm = idx.mesh();
+    const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
+    metrics.assign(nf, Triangle_metric());
+    dual_vertices.assign(nf, Vec3::Zero());
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      auto h = halfedge(idx.face_at(f), tm);
+      const std::array<std::size_t, 3> t = { idx.id(source(h, tm)), idx.id(target(h, tm)),
+                                             idx.id(target(next(h, tm), tm)) };
+      const std::array<std::size_t, 3> fe = { idx.edge_id(h), idx.edge_id(next(h, tm)),
+                                              idx.edge_id(prev(h, tm)) };
+      metrics[f] = triangle_metric(vin[t[0]], vin[t[1]], vin[t[2]], gamma, curvature_scale);
+      // dual vertex: centroid of the feature points on its feature edges, if any
+      // (a feature edge without located points contributes its midpoint), else centroid
+      Vec3 sum = Vec3::Zero();
+      int count = 0;
+      for(int c = 0; c < 3; ++c)
+      {
+        const std::size_t e = fe[c];
+        if(!is_feature_edge[e]) continue;
+        if(feature_point_count[e] > 0) { sum += feature_point_sum[e] / feature_point_count[e]; ++count; }
+        else
+        {
+          auto he = halfedge(idx.edge_at(e), tm);
+          sum += 0.5 * (vin[idx.id(source(he, tm))].p + vin[idx.id(target(he, tm))].p);
+          ++count;
+        }
+      }
+      dual_vertices[f] = count > 0 ? Vec3(sum / count) : Vec3((vin[t[0]].p + vin[t[1]].p + vin[t[2]].p) / 3.);
+    }
+    similarity.assign(ne, 0.);
+    award.assign(ne, 0.);
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      auto h = halfedge(idx.edge_at(e), tm);
+      const std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
+      if(f1 != Indexing::npos && f2 != Indexing::npos)
+      {
+        const Vec3 w = dual_vertices[f2] - dual_vertices[f1];
+        similarity[e] = 0.5 * (metrics[f1].anisotropic(w) + metrics[f2].anisotropic(w));
+        award[e] = 0.5 * (metrics[f1].euclidean(w) + metrics[f2].euclidean(w));
+      }
+      else
+      {
+        // Border edge: a boundary cutting it runs from the dual vertex of its one face
+        // to the edge; the half segment from the dual vertex to the edge's feature
+        // point (or midpoint) takes the place of the dual segment.
+        const std::size_t f = (f1 != Indexing::npos) ? f1 : f2;
+        if(f == Indexing::npos) continue; // an isolated edge: no face, weight 0
+        const Vec3 end = feature_point_count[e] > 0
+                           ? Vec3(feature_point_sum[e] / feature_point_count[e])
+                           : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
+        const Vec3 w = end - dual_vertices[f];
+        similarity[e] = metrics[f].anisotropic(w);
+        award[e] = metrics[f].euclidean(w);
+      }
+    }
+  }
+
+  // Per-triangle tensor: the vertices' curvature tensors k1 d1 d1^T + k2 d2 d2^T are
+  // averaged (tensors, unlike directions, have no sign ambiguity), restricted to the
+  // triangle's plane and diagonalised there.
+  static Triangle_metric triangle_metric(const Vertex_tensor_input& a, const Vertex_tensor_input& b,
+                                         const Vertex_tensor_input& c, double gamma, double scale)
+  {
+    Triangle_metric m;
+    const Vec3 n = (b.p - a.p).cross(c.p - a.p);
+    const double len = n.norm();
+    if(!(len > 0) || !std::isfinite(len))
+      return m; // degenerate: Euclidean (documented), so Similarity = Award
+    const Vec3 nn = n / len;
+    m.u = (b.p - a.p).normalized();
+    m.v = nn.cross(m.u);
+    Eigen::Matrix3d T = Eigen::Matrix3d::Zero();
+    for(const Vertex_tensor_input* x : {&a, &b, &c})
+      T += x->k1 * x->d1 * x->d1.transpose() + x->k2 * x->d2 * x->d2.transpose();
+    T /= 3.;
+    Eigen::Matrix<double, 3, 2> B;
+    B.col(0) = m.u; B.col(1) = m.v;
+    const Eigen::Matrix2d S = B.transpose() * T * B;
+    const double mean = 0.5 * (S(0, 0) + S(1, 1));
+    const double radius = std::sqrt(0.25 * (S(0, 0) - S(1, 1)) * (S(0, 0) - S(1, 1)) + S(0, 1) * S(0, 1));
+    const double lp = mean + radius, lm = mean - radius;
+    const double theta = 0.5 * std::atan2(2. * S(0, 1), S(0, 0) - S(1, 1));
+    Eigen::Vector2d dp(std::cos(theta), std::sin(theta)), dm(-std::sin(theta), std::cos(theta));
+    const bool plus_first = std::abs(lp) >= std::abs(lm);
+    const double k1 = plus_first ? lp : lm, k2 = plus_first ? lm : lp;
+    m.e1 = plus_first ? dp : dm;
+    m.e2 = plus_first ? dm : dp;
+    m.anisotropy = (std::abs(k1) - std::abs(k2)) * scale;
+    const double q = 1. + gamma * m.anisotropy;
+    m.lambda2 = 1. / (q * q);
+    return m;
+  }
+
+  std::vector<Triangle_metric> metrics;  // per face
+  std::vector<Vec3> dual_vertices;       // per face
+  std::vector<double> similarity, award; // per edge
+};
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_EDGE_WEIGHTS_IMPL_H

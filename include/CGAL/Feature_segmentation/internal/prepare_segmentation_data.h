@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Resolves the named parameters shared by the weights, the segmentation and the editing
+// class into a filled Segmentation_data: the user's curvature map or an estimate, the
+// user's feature edges or lines or detected crest lines, then Similarity and Award.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_PREPARE_SEGMENTATION_DATA_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_PREPARE_SEGMENTATION_DATA_H
+
+#include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/crest_lines.h>
+#include <CGAL/Feature_segmentation/principal_curvatures.h>
+#include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Dynamic_property_map.h>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+template <typename TriangleMesh, typename NamedParameters>
+Segmentation_options read_segmentation_options(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Segmentation_options opt;
+  opt.alpha = choose_parameter(get_parameter(np, internal_np::alpha), opt.alpha);
+  opt.gamma = choose_parameter(get_parameter(np, internal_np::gamma), opt.gamma);
+  opt.check();
+  return opt;
+}
+
+// Fills `data` (constructed on `tm`) from the named parameters; `lines_out` receives the
+// feature lines used (detected or the user's), empty when only an edge map was given.
+template <typename TriangleMesh, typename NamedParameters>
+void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np,
+                               const Segmentation_options& opt,
+                               Segmentation_data<TriangleMesh>& data,
+                               Feature_lines<TriangleMesh>& lines_out)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  using CGAL::parameters::is_default_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_const_property_map(CGAL::vertex_point, tm));
+
+  check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
+
+  auto own_curvature = get(CGAL::dynamic_vertex_property_t<Principal_curvatures<GT> >(), tm);
+  auto own_features = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+
+  auto with_curvature = [&](auto cmap) {
+    data.set_geometry(vpm, cmap);
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value)
+    {
+      lines_out = get_parameter_reference(np, internal_np::feature_lines);
+      mark_feature_edges(tm, lines_out, own_features);
+      if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+      {
+        // both given: the union of the user's edges and the lines' edges
+        auto user = get_parameter(np, internal_np::edge_is_feature);
+        for(auto e : edges(tm)) if(get(user, e)) put(own_features, e, true);
+      }
+      data.set_features(own_features, lines_out);
+    }
+    else if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+    {
+      lines_out.lines.clear();
+      data.set_features(get_parameter(np, internal_np::edge_is_feature), lines_out);
+    }
+    else
+    {
+      lines_out = detect_crest_lines(tm, cmap, np);
+      mark_feature_edges(tm, lines_out, own_features);
+      data.set_features(own_features, lines_out);
+    }
+  };
+
+  if constexpr(is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
+  {
+    estimate_principal_curvatures(tm, own_curvature, np);
+    with_curvature(own_curvature);
+  }
+  else
+    with_curvature(get_parameter(np, internal_np::principal_curvature_map));
+
+  data.compute_terms(opt.gamma);
+}
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_PREPARE_SEGMENTATION_DATA_H

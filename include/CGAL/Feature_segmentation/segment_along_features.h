@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The one-shot automatic segmentation (paper, Sections 3.1-3.3): curvature, crest lines,
+// edge weights, then correlation clustering of the mesh's vertex graph; the number of
+// patches comes out of the solve.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_SEGMENT_ALONG_FEATURES_H
+#define CGAL_FEATURE_SEGMENTATION_SEGMENT_ALONG_FEATURES_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
+#include <CGAL/Feature_segmentation/Solver_sequence.h>
+#include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+// The patch of a face from its vertices' patches: the majority; when the three differ,
+// the smallest id.
+inline std::size_t face_patch_from_vertices(std::size_t a, std::size_t b, std::size_t c)
+{
+  if(a == b || a == c) return a;
+  if(b == c) return b;
+  return (std::min)(a, (std::min)(b, c));
+}
+
+template <typename TriangleMesh, typename FacePatchMap>
+void write_face_patches(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std::size_t>& labels,
+                        FacePatchMap face_patch)
+{
+  const TriangleMesh& tm = idx.mesh();
+  typedef typename boost::property_traits<FacePatchMap>::value_type Id;
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  {
+    auto h = halfedge(idx.face_at(f), tm);
+    put(face_patch, idx.face_at(f),
+        static_cast<Id>(face_patch_from_vertices(labels[idx.id(source(h, tm))], labels[idx.id(target(h, tm))],
+                                                 labels[idx.id(target(next(h, tm), tm))])));
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgFeatureSegmentationSegmentation
+/// Segments `tm` into patches whose boundaries follow its salient ridges and valleys:
+/// correlation clustering of the mesh's vertex graph with the weights of
+/// `compute_edge_weights()` (Eq. 1 and 3). Returns the number of patches and writes the
+/// patch of every vertex, numbered `0` to `n-1` in the order of the vertices.
+///
+/// The vertex labels are the clustering's output; a patch's boundary is the dual of its
+/// cut edges. Faces get the patch of the majority of their three vertices, or the smallest
+/// of the three ids when all differ.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VertexPatchMap a `WritablePropertyMap` from `vertex_descriptor` to an integer type
+/// \param tm the mesh (checked with `check_input_mesh()`: throws `Invalid_input`)
+/// \param vertex_patch_map the output
+/// \param np optional named parameters:
+///   - `alpha` (double): the global parameter, `alpha_e` on feature edges; default 0.6;
+///     useful range 0.5 to 1.0, larger gives more patches
+///   - `gamma` (double >= 0): anisotropy of the metric, default 0.05
+///   - `edge_alpha_map`: `alpha_e` for every edge (overrides `alpha`)
+///   - `principal_curvature_map`: the vertex curvatures (else estimated with
+///     `neighborhood_rings`, default 2)
+///   - `feature_lines` (`Feature_lines<TriangleMesh>`) and/or `edge_is_feature_map`: the
+///     features (else crest lines are detected with `strength_threshold`,
+///     `umbilic_ratio`, `detect_ridges`, `detect_valleys`)
+///   - `solver`: a model of `CorrelationClusteringSolver`, default
+///     `Default_correlation_clustering_solver` (GAEC followed by Kernighan-Lin with joins)
+///   - `face_patch_map`: an optional output, a `WritablePropertyMap` from
+///     `face_descriptor` to an integer type
+///   - `cut_cost_output` (`double*`): an optional output, the cut cost of the result (Eq. 1)
+///   - `vertex_point_map`, `geom_traits`
+/// \return the number of patches
+template <typename TriangleMesh, typename VertexPatchMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t segment_along_features(const TriangleMesh& tm, VertexPatchMap vertex_patch_map,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  const internal::Segmentation_options opt = internal::read_segmentation_options<TriangleMesh>(np);
+  internal::Segmentation_data<TriangleMesh> data(tm);
+  Feature_lines<TriangleMesh> lines;
+  internal::prepare_segmentation_data(tm, np, opt, data, lines);
+
+  std::vector<double> alpha_e = data.default_alpha(opt.alpha);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
+  {
+    auto amap = get_parameter(np, internal_np::edge_alpha);
+    for(std::size_t e = 0; e < alpha_e.size(); ++e) alpha_e[e] = get(amap, data.idx.edge_at(e));
+  }
+  const Correlation_clustering_graph g = data.graph(alpha_e);
+  std::vector<std::size_t> labels;
+  const auto solver = choose_parameter(get_parameter(np, internal_np::solver),
+                                       Default_correlation_clustering_solver());
+  solver(g, labels);
+  CGAL_postcondition(labels.size() == g.number_of_nodes());
+  const std::size_t n = normalize_labels(labels);
+
+  typedef typename boost::property_traits<VertexPatchMap>::value_type Id;
+  for(std::size_t v = 0; v < labels.size(); ++v)
+    put(vertex_patch_map, data.idx.vertex_at(v), static_cast<Id>(labels[v]));
+  if constexpr(!is_default_parameter<NamedParameters, CGAL::internal_np::face_patch_t>::value)
+    internal::write_face_patches(data.idx, labels, get_parameter(np, CGAL::internal_np::face_patch));
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::cut_cost_output_t>::value)
+  {
+    double* out = get_parameter(np, internal_np::cut_cost_output);
+    if(out != nullptr) *out = cut_cost(g, labels);
+  }
+  return n;
+}
+
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_FEATURE_SEGMENTATION_SEGMENT_ALONG_FEATURES_H
