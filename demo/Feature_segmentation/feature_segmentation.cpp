@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The command-line program of the package: reads a mesh, runs the pipeline stage by
-// stage (load -> curvature -> feature lines), each stage timed, and writes the feature
-// lines (CGAL polylines and OBJ) and a JSON summary into an output folder. Bad input or
-// bad options give one "error: ..." line on stderr and a non-zero exit status.
+// stage (load -> curvature -> feature lines -> segmentation), each stage timed, and
+// writes the feature lines (CGAL polylines and OBJ), the segmentation (a PLY mesh with a
+// patch id and colour per face, and the patch of every vertex and face of the input file)
+// and a JSON summary into an output folder. Bad input or bad options give one
+// "error: ..." line on stderr and a non-zero exit status.
 
 #include "read_input_mesh.h"
 #include "read_user_feature_lines.h"
@@ -11,17 +13,27 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/Greedy_additive_edge_contraction.h>
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
+#include <CGAL/Feature_segmentation/IO/write_segmentation.h>
+#include <CGAL/Feature_segmentation/Kernighan_lin_with_joins.h>
+#include <CGAL/Feature_segmentation/Solver_sequence.h>
 #include <CGAL/Feature_segmentation/crest_lines.h>
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/parameters.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
+#include <CGAL/Feature_segmentation/segment_along_features.h>
+
+#include <CGAL/property_map.h>
+
+#include <boost/range/counting_range.hpp>
 
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -58,6 +70,10 @@ struct Options
   bool ridges = true;
   bool valleys = true;
   std::string feature_edges_file;           // empty: none
+  // The library's defaults for alpha and gamma (segment_along_features()).
+  double alpha = 0.6;
+  double gamma = 0.05;
+  std::string solver = "gaec+klj";
   bool quiet = false;
   bool help = false;
 };
@@ -69,11 +85,27 @@ void print_usage(std::ostream& os)
      << "Detects the feature lines (ridges and valleys) of a triangle mesh and writes\n"
      << "  DIR/feature_lines.polylines.txt  CGAL polylines, one feature line per line of text\n"
      << "  DIR/feature_lines.obj            the same lines as OBJ line elements\n"
-     << "  DIR/summary.json                 mesh and feature counts, seconds per stage\n"
+     << "and segments it into patches bounded by them (correlation clustering), writing\n"
+     << "  DIR/segmentation.ply             the mesh (triangulated, repaired) with a patch_id\n"
+     << "                                   and a red, green, blue colour per face\n"
+     << "  DIR/face_patches.txt             the patch of every face of MESH, one per line\n"
+     << "  DIR/vertex_patches.txt           the patch of every vertex of MESH, one per line\n"
+     << "  DIR/summary.json                 mesh and feature counts, patches, cut cost,\n"
+     << "                                   seconds per stage\n"
      << "\n"
      << "MESH is an .off, .obj, .ply or .stl file (default: " << FS_MESH_DIR << "/fandisk.off).\n"
      << "Quads and polygons are triangulated, duplicate points and faces removed, with a\n"
      << "notice on stderr.\n"
+     << "\n"
+     << "Patch files follow the input file's order: line i is the patch of its i-th vertex\n"
+     << "(or face). Patches are numbered from 0. A face has the patch of the majority of\n"
+     << "its three vertices (the smallest of the three when all differ); a quad or polygon\n"
+     << "that was triangulated has the patch of its first triangle. A duplicate vertex\n"
+     << "(same position as an earlier one) or duplicate face (same vertices as an earlier\n"
+     << "one) has the patch of that earlier one; a vertex split to repair a pinched\n"
+     << "(non-manifold) vertex has the patch of its first copy; a vertex that no face\n"
+     << "uses has -1. For STL, the vertices are the distinct points in order of first\n"
+     << "appearance.\n"
      << "\n"
      << "Options:\n"
      << "  --output-dir DIR          output folder, created if needed\n"
@@ -85,6 +117,12 @@ void print_usage(std::ostream& os)
      << "  --no-valleys              do not detect valleys\n"
      << "  --feature-edges FILE      add user feature lines: a CGAL polylines file whose\n"
      << "                            points are mesh vertices and segments mesh edges\n"
+     << "  --alpha X                 weight of the feature lines, any finite number; larger\n"
+     << "                            gives more patches, useful range 0.5 to 1 (default: 0.6)\n"
+     << "  --gamma X                 anisotropy of the metric, X >= 0 (default: 0.05)\n"
+     << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
+     << "                            edge contraction, then Kernighan-Lin with joins),\n"
+     << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"
      << "  --quiet                   no progress or notice lines on stderr\n"
      << "  --help                    print this help and exit\n";
 }
@@ -192,6 +230,21 @@ Options parse_command_line(int argc, char** argv)
       if(options.feature_edges_file.empty())
         throw Usage_error("--feature-edges expects a file name");
     }
+    else if(arg == "--alpha")
+      options.alpha = parse_double(arg, take_value());
+    else if(arg == "--gamma")
+    {
+      const std::string text = take_value();
+      options.gamma = parse_double(arg, text);
+      if(options.gamma < 0)
+        throw Usage_error("--gamma must be >= 0 (got '" + text + "')");
+    }
+    else if(arg == "--solver")
+    {
+      options.solver = take_value();
+      if(options.solver != "gaec+klj" && options.solver != "gaec" && options.solver != "klj")
+        throw Usage_error("--solver must be gaec+klj, gaec or klj (got '" + options.solver + "')");
+    }
     else if(arg.size() > 1 && arg[0] == '-')
       throw Usage_error("unknown option '" + arg + "' (see --help)");
     else
@@ -270,12 +323,56 @@ std::string json_string(const std::string& s)
   return os.str();
 }
 
-std::string json_number(double x, int digits = std::numeric_limits<double>::max_digits10)
+// `digits` significant digits; by default the fewest that read back as `x` (0.6, not
+// 0.59999999999999998), which is as deterministic as a fixed count.
+std::string json_number(double x, int digits = 0)
 {
   std::ostringstream os;
-  os << std::setprecision(digits) << x;
-  return os.str();
+  if(digits > 0)
+  {
+    os << std::setprecision(digits) << x;
+    return os.str();
+  }
+  for(int d = 1;; ++d)
+  {
+    os.str(std::string());
+    os << std::setprecision(d) << x;
+    if(d >= std::numeric_limits<double>::max_digits10 ||
+       std::strtod(os.str().c_str(), nullptr) == x)
+      return os.str();
+  }
 }
+
+// The solver chosen with --solver, timed on its own: the segmentation stage also builds
+// the graph and its weights, and the summary reports both times.
+class Timed_solver
+{
+public:
+  Timed_solver(const std::string& name, double& seconds) : m_name(name), m_seconds(&seconds) {}
+
+  std::size_t operator()(const FS::Correlation_clustering_graph& g,
+                         std::vector<std::size_t>& labels) const
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t n = 0;
+    if(m_name == "gaec")
+      n = FS::Greedy_additive_edge_contraction()(g, labels);
+    else if(m_name == "klj")
+    {
+      labels.clear(); // from singletons
+      n = FS::Kernighan_lin_with_joins()(g, labels);
+    }
+    else
+      n = FS::Default_correlation_clustering_solver()(g, labels);
+    const std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
+    *m_seconds = d.count();
+    return n;
+  }
+
+private:
+  std::string m_name;
+  double* m_seconds; // the solver is copied by the segmentation: the time lives with the caller
+};
 
 struct Results
 {
@@ -288,6 +385,9 @@ struct Results
   std::size_t number_of_valleys = 0;
   std::size_t number_of_user_lines = 0;
   std::size_t number_of_lines = 0;
+  std::size_t number_of_patches = 0;
+  double cut_cost = 0;
+  double solver_seconds = 0;
 };
 
 void write_summary(std::ostream& os, const Options& options, const Results& r,
@@ -305,7 +405,10 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "    \"valleys\": " << (options.valleys ? "true" : "false") << ",\n"
      << "    \"feature_edges_file\": "
      << (options.feature_edges_file.empty() ? std::string("null")
-                                            : json_string(options.feature_edges_file)) << "\n"
+                                            : json_string(options.feature_edges_file)) << ",\n"
+     << "    \"alpha\": " << json_number(options.alpha) << ",\n"
+     << "    \"gamma\": " << json_number(options.gamma) << ",\n"
+     << "    \"solver\": " << json_string(options.solver) << "\n"
      << "  },\n"
      << "  \"input_file\": {\n"
      << "    \"format\": " << json_string(r.read_report.format) << ",\n"
@@ -329,6 +432,11 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "    \"user\": " << r.number_of_user_lines << "\n"
      << "  },\n"
      << "  \"feature_edges\": " << r.number_of_feature_edges << ",\n"
+     << "  \"segmentation\": {\n"
+     << "    \"patches\": " << r.number_of_patches << ",\n"
+     << "    \"cut_cost\": " << json_number(r.cut_cost) << ",\n"
+     << "    \"solver_seconds\": " << json_number(r.solver_seconds, 6) << "\n"
+     << "  },\n"
      << "  \"seconds\": {\n";
   double total = 0;
   for(const auto& s : seconds)
@@ -368,8 +476,9 @@ int run(const Options& options)
                              (ec ? " (" + ec.message() + ")" : std::string()));
 
   Mesh mesh;
+  fs_demo::Input_correspondence<Mesh> correspondence;
   results.read_report = timer.run("load", [&]() {
-    return fs_demo::read_input_mesh(options.input, mesh);
+    return fs_demo::read_input_mesh(options.input, mesh, correspondence);
   });
   if(!options.quiet)
     for(const std::string& notice : results.read_report.notices)
@@ -414,12 +523,51 @@ int run(const Options& options)
               << results.number_of_valleys << " valleys, " << results.number_of_user_lines
               << " user; " << results.number_of_feature_edges << " feature edges" << std::endl;
 
+  // The curvature and the lines (detected and the user's) of the stages above, so that
+  // this stage times the weights and the solve only.
+  auto vertex_patch = mesh.add_property_map<Mesh::Vertex_index, long>("v:fs_patch", -1).first;
+  auto face_patch = mesh.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
+  results.number_of_patches = timer.run("segmentation", [&]() {
+    return FS::segment_along_features(
+      mesh, vertex_patch,
+      FS::parameters::alpha(options.alpha)
+        .gamma(options.gamma)
+        .principal_curvature_map(curvature_map)
+        .feature_lines(std::cref(lines))
+        .solver(Timed_solver(options.solver, results.solver_seconds))
+        .face_patch_map(face_patch)
+        .cut_cost_output(&results.cut_cost));
+  });
+  if(!options.quiet)
+    std::cerr << "segmentation: " << results.number_of_patches << " patches, cut cost "
+              << results.cut_cost << " (solver " << options.solver << ": " << std::fixed
+              << std::setprecision(3) << results.solver_seconds << " s)" << std::defaultfloat
+              << std::endl;
+
+  // The patch of every point and face of the input file, in file order (-1: a point no
+  // face uses).
+  std::vector<long> file_vertex_patch, file_face_patch;
+  for(Mesh::Vertex_index v : correspondence.vertex_of_file_point)
+    file_vertex_patch.push_back(v == Mesh::null_vertex() ? -1L : get(vertex_patch, v));
+  for(Mesh::Face_index f : correspondence.face_of_file_face)
+    file_face_patch.push_back(get(face_patch, f));
+
   const sfs::path dir(options.output_dir);
   timer.run("write", [&]() {
     write_file(dir / "feature_lines.polylines.txt",
                [&](std::ostream& os) { FS::write_polylines(os, mesh, lines); });
     write_file(dir / "feature_lines.obj",
                [&](std::ostream& os) { FS::write_OBJ_lines(os, mesh, lines); });
+    write_file(dir / "segmentation.ply",
+               [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); });
+    write_file(dir / "face_patches.txt", [&](std::ostream& os) {
+      FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file_face_patch.size()),
+                          CGAL::make_property_map(file_face_patch));
+    });
+    write_file(dir / "vertex_patches.txt", [&](std::ostream& os) {
+      FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file_vertex_patch.size()),
+                          CGAL::make_property_map(file_vertex_patch));
+    });
   });
   // Written last, so that it holds the time of every stage.
   write_file(dir / "summary.json",

@@ -6,7 +6,8 @@
 // pinched vertices, inconsistent orientation, quads and polygons), and turned into a
 // triangle mesh. Every failure is an `Input_error` whose message is one line naming the
 // cause, so that a program prints it and exits instead of crashing further down; every
-// repair is reported as a notice line.
+// repair is reported as a notice line. The repairs keep track of where each point and
+// face of the file went, so that results on the mesh can be written in the file's order.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
 #define CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
@@ -17,8 +18,8 @@
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
@@ -58,6 +59,24 @@ struct Read_report
   std::size_t number_of_triangulated_faces = 0; ///< quads and polygons split into triangles
   std::size_t number_of_border_edges = 0;    ///< border edges of the final mesh
   std::vector<std::string> notices;          ///< one line per repair, without prefix
+};
+
+/// Where the points and faces of the file went. For STL, which stores no shared
+/// vertices, the file's points are the distinct points in order of first appearance (as
+/// CGAL's reader numbers them).
+template <typename Mesh>
+struct Input_correspondence
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+
+  /// For each point of the file, in file order: its mesh vertex; for a duplicate point,
+  /// the vertex of the first point at the same position; for a point of a pinched vertex
+  /// that was split, the first copy; `null_vertex()` for a point that no face uses.
+  std::vector<vertex_descriptor> vertex_of_file_point;
+  /// For each face of the file, in file order: its mesh face, the first triangle of a
+  /// triangulated polygon; for a duplicate face, the face of its first occurrence.
+  std::vector<face_descriptor> face_of_file_face;
 };
 
 namespace internal {
@@ -294,15 +313,127 @@ void check_edges(const std::string& path, const std::vector<Point>& points,
   }
 }
 
+constexpr std::size_t no_index = std::size_t(-1);
+
+// A face as a key that is the same for every starting vertex and both orientations, as
+// CGAL's merge_duplicate_polygons_in_polygon_soup compares faces by default.
+template <typename Polygon>
+std::vector<std::size_t> canonical_face(const Polygon& polygon)
+{
+  const std::size_t n = polygon.size();
+  const std::size_t first = static_cast<std::size_t>(
+    std::min_element(polygon.begin(), polygon.end()) - polygon.begin());
+  std::vector<std::size_t> forward(n), backward(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    forward[k] = polygon[(first + k) % n];
+    backward[k] = polygon[(first + n - k) % n];
+  }
+  return (std::min)(forward, backward);
+}
+
+// What CGAL's repair_polygon_soup does to a soup that passed check_soup, with the
+// correspondence it does not give: points at the same position become the first of them,
+// a face listing one position twice in a row keeps it once, a face equal to an earlier
+// one (up to its start and orientation) is removed in favour of that one, and points no
+// face uses are removed. The kept points and faces keep their file order.
+// `point_of_file_point[i]` is the new index of file point i (`no_index` if unused),
+// `polygon_of_file_face[f]` the new index of file face f.
+template <typename Point, typename Polygon>
+void merge_duplicates(const std::string& path, std::vector<Point>& points,
+                      std::vector<Polygon>& polygons,
+                      std::vector<std::size_t>& point_of_file_point,
+                      std::vector<std::size_t>& polygon_of_file_face)
+{
+  // Coordinates are finite here (check_soup), so the lexicographic order is a strict order.
+  std::vector<std::size_t> first_at_position(points.size());
+  {
+    std::map<Point, std::size_t> first;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      first_at_position[i] = first.emplace(points[i], i).first->second;
+  }
+
+  std::vector<Polygon> kept;
+  polygon_of_file_face.assign(polygons.size(), no_index);
+  std::map<std::vector<std::size_t>, std::size_t> face_of_key;
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    Polygon merged;
+    for(std::size_t i : polygons[f])
+    {
+      const std::size_t j = first_at_position[i];
+      if(merged.empty() || merged.back() != j)
+        merged.push_back(j);
+    }
+    if(merged.size() > 1 && merged.back() == merged.front())
+      merged.pop_back();
+    std::vector<std::size_t> sorted(merged.begin(), merged.end());
+    std::sort(sorted.begin(), sorted.end());
+    if(merged.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      throw Input_error(path + ": " + face_name(f) +
+                        " is degenerate (two of its vertices are at the same position)");
+    const auto inserted = face_of_key.emplace(canonical_face(merged), kept.size());
+    polygon_of_file_face[f] = inserted.first->second;
+    if(inserted.second)
+      kept.push_back(std::move(merged));
+  }
+
+  std::vector<std::size_t> new_index(points.size(), no_index);
+  for(const Polygon& polygon : kept)
+    for(std::size_t i : polygon)
+      new_index[i] = 0; // used; numbered below in file order
+  std::vector<Point> used_points;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(new_index[i] != no_index)
+    {
+      new_index[i] = used_points.size();
+      used_points.push_back(points[i]);
+    }
+  for(Polygon& polygon : kept)
+    for(std::size_t& i : polygon)
+      i = new_index[i];
+  point_of_file_point.resize(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    point_of_file_point[i] = new_index[first_at_position[i]];
+
+  points.swap(used_points);
+  polygons.swap(kept);
+}
+
+// A triangulation visitor that records the first triangle made from a face.
+template <typename Mesh>
+class First_subface_visitor
+{
+public:
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+
+  explicit First_subface_visitor(face_descriptor& first) : m_first(&first) {}
+
+  void before_subface_creations(face_descriptor) { *m_first = boost::graph_traits<Mesh>::null_face(); }
+  void after_subface_created(face_descriptor f)
+  {
+    if(*m_first == boost::graph_traits<Mesh>::null_face())
+      *m_first = f;
+  }
+  void after_subface_creations() {}
+
+private:
+  face_descriptor* m_first; // the visitor is copied: the result lives with the caller
+};
+
 } // namespace internal
 
-/// Reads `path` into `mesh` (which is cleared first) and returns what was repaired.
+/// Reads `path` into `mesh` (which is cleared first) and returns what was repaired;
+/// `correspondence` receives where each point and face of the file went.
 /// Throws `Input_error` when the file cannot be read or the mesh cannot be processed.
 template <typename Mesh>
-Read_report read_input_mesh(const std::string& path, Mesh& mesh)
+Read_report read_input_mesh(const std::string& path, Mesh& mesh,
+                            Input_correspondence<Mesh>& correspondence)
 {
   typedef typename boost::property_traits<
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
   typedef std::vector<std::size_t> Polygon;
   namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -351,9 +482,11 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh)
 
   internal::check_soup(path, points, polygons);
 
-  // Merges points with equal coordinates, removes duplicate faces and unused points.
-  // Degenerate faces, which it would drop silently, were rejected above.
-  PMP::repair_polygon_soup(points, polygons);
+  // Merges points with equal coordinates, removes duplicate faces and unused points,
+  // recording where each point and face of the file goes. Degenerate faces were
+  // rejected above.
+  std::vector<std::size_t> point_of_file_point, polygon_of_file_face;
+  internal::merge_duplicates(path, points, polygons, point_of_file_point, polygon_of_file_face);
   if(points.size() < report.number_of_file_points)
   {
     report.number_of_merged_points = report.number_of_file_points - points.size();
@@ -379,19 +512,55 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh)
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
     throw Input_error(path + ": the faces do not form a manifold surface, even after repair");
 
+  // Built here rather than by polygon_soup_to_polygon_mesh, which does not say which
+  // face a polygon became. Point i becomes the i-th vertex, polygon p the p-th face.
+  // orient_polygon_soup appends the copies of split points: the originals stay first.
   mesh.clear();
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-
-  for(auto f : faces(mesh))
-    if(!CGAL::is_triangle(halfedge(f, mesh), mesh))
-      ++report.number_of_triangulated_faces;
-  if(report.number_of_triangulated_faces > 0)
+  std::vector<vertex_descriptor> vertex_of_point(points.size());
+  auto vpm = get(CGAL::vertex_point, mesh);
+  for(std::size_t i = 0; i < points.size(); ++i)
   {
-    if(!PMP::triangulate_faces(mesh))
-      throw Input_error(path + ": a quad or polygon face cannot be triangulated");
+    vertex_of_point[i] = add_vertex(mesh);
+    put(vpm, vertex_of_point[i], points[i]);
+  }
+  std::vector<face_descriptor> face_of_polygon(polygons.size());
+  std::vector<vertex_descriptor> face_vertices;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    face_vertices.clear();
+    for(std::size_t i : polygons[p])
+      face_vertices.push_back(vertex_of_point[i]);
+    face_of_polygon[p] = CGAL::Euler::add_face(face_vertices, mesh);
+    if(face_of_polygon[p] == boost::graph_traits<Mesh>::null_face())
+      throw Input_error(path + ": the faces do not form a manifold surface, even after repair");
+  }
+
+  // One face at a time, so that each polygon's first triangle is known.
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    if(polygons[p].size() == 3)
+      continue;
+    ++report.number_of_triangulated_faces;
+    face_descriptor first_triangle = boost::graph_traits<Mesh>::null_face();
+    if(!PMP::triangulate_face(face_of_polygon[p], mesh,
+                              CGAL::parameters::visitor(
+                                internal::First_subface_visitor<Mesh>(first_triangle))) ||
+       first_triangle == boost::graph_traits<Mesh>::null_face())
+      throw Input_error(path + ": " + internal::face_name(p) + " (a quad or polygon) cannot be triangulated");
+    face_of_polygon[p] = first_triangle;
+  }
+  if(report.number_of_triangulated_faces > 0)
     report.notices.push_back("triangulated " + std::to_string(report.number_of_triangulated_faces) +
                              " faces (quads or polygons)");
-  }
+
+  correspondence.vertex_of_file_point.assign(point_of_file_point.size(),
+                                             boost::graph_traits<Mesh>::null_vertex());
+  for(std::size_t i = 0; i < point_of_file_point.size(); ++i)
+    if(point_of_file_point[i] != internal::no_index)
+      correspondence.vertex_of_file_point[i] = vertex_of_point[point_of_file_point[i]];
+  correspondence.face_of_file_face.resize(polygon_of_file_face.size());
+  for(std::size_t f = 0; f < polygon_of_file_face.size(); ++f)
+    correspondence.face_of_file_face[f] = face_of_polygon[polygon_of_file_face[f]];
 
   try
   {
@@ -404,6 +573,14 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh)
     throw Input_error(path + ": " + e.what());
   }
   return report;
+}
+
+/// Reads `path` into `mesh`, without the correspondence to the file.
+template <typename Mesh>
+Read_report read_input_mesh(const std::string& path, Mesh& mesh)
+{
+  Input_correspondence<Mesh> correspondence;
+  return read_input_mesh(path, mesh, correspondence);
 }
 
 } // namespace fs_demo
