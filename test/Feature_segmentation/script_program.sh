@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Tests the command-line program `feature_segmentation`: a run on fandisk whose outputs
-# must be complete, well-formed, consistent with the mesh and deterministic, a quad mesh
-# that must be triangulated with a notice, and every kind of bad input and bad option,
+# (feature lines, segmentation, summary) must be complete, well-formed, consistent with
+# the mesh and deterministic, the segmentation options, a quad mesh that must be
+# triangulated with a notice, patch files that follow the input file's order through
+# the reader's repairs, and every kind of bad input and bad option,
 # each of which must end in one "error:" line on stderr and the documented exit status
 # (1 for bad input, 2 for a bad command line), never a crash or a hang.
 # Run by ctest with FS_BINARY_DIR (top build folder) and FS_MESH_DIR set.
@@ -51,6 +53,44 @@ json_int() {
   fi
 }
 
+# json_number FILE SECTION KEY: like json_int, for any JSON number.
+json_number() {
+  local file="$1" section="$2" key="$3" number='\(-\{0,1\}[0-9][0-9.eE+-]*\)'
+  sed -n "/^  \"$section\": {/,/^  }/s/^    \"$key\": $number,\{0,1\}\$/\1/p" "$file"
+}
+
+# ids_cover FILE N: every line is an integer in [0, N) and every such integer occurs.
+ids_cover() {
+  awk -v n="$2" '$0 !~ /^[0-9]+$/ || $1 >= n { bad = 1; exit } { seen[$1] = 1 }
+                 END { if (bad) exit 1; for (i = 0; i < n; i++) if (!(i in seen)) exit 1 }' "$1"
+}
+# ids_in_range FILE N: every line is an integer in [0, N).
+ids_in_range() {
+  awk -v n="$2" '$0 !~ /^[0-9]+$/ || $1 >= n { bad = 1 } END { exit bad }' "$1"
+}
+
+# ply_header_ok FILE VERTICES FACES: an ASCII PLY file with these element counts, the
+# face properties of segmentation.ply, and one data line per element; every face line
+# is "3 i j k patch_id red green blue" with its vertex indices in range.
+ply_header_ok() {
+  awk -v nv="$2" -v nf="$3" '
+    NR == 1 { if ($0 != "ply") exit 1; next }
+    !body {
+      if ($0 == "format ascii 1.0") format = 1
+      if ($1 == "element" && $2 == "vertex") v = $3
+      if ($1 == "element" && $2 == "face") { f = $3; in_face = 1 }
+      if (in_face && $1 == "property") props = props " " $NF ":" $2
+      if ($0 == "end_header") body = 1
+      next
+    }
+    { row++ }
+    row > nv && (NF != 8 || $1 != 3 || $2 >= nv || $3 >= nv || $4 >= nv) { bad = 1 }
+    END {
+      if (!format || v != nv || f != nf || row != nv + nf || bad) exit 1
+      if (props != " vertex_indices:list patch_id:int red:uchar green:uchar blue:uchar") exit 1
+    }' "$1"
+}
+
 # A polylines file is well-formed if every line is "n x1 y1 z1 ... xn yn zn", n >= 2.
 polylines_well_formed() {
   awk '{ if ($1 !~ /^[0-9]+$/ || $1 < 2 || NF != 1 + 3 * $1) { print "line " NR ": bad record"; bad = 1 } }
@@ -61,7 +101,8 @@ polylines_well_formed() {
 out="$work/fandisk"
 run fandisk "$fandisk" --output-dir "$out"
 check "fandisk: exit status 0 (got $rc; stderr: $(tail -n 1 "$work/fandisk.err"))" [ "$rc" -eq 0 ]
-for f in feature_lines.polylines.txt feature_lines.obj summary.json; do
+for f in feature_lines.polylines.txt feature_lines.obj summary.json segmentation.ply \
+         face_patches.txt vertex_patches.txt; do
   check "fandisk: $f written" [ -s "$out/$f" ]
 done
 check "fandisk: no error line on stderr" bash -c "! grep -q '^error:' '$work/fandisk.err'"
@@ -93,7 +134,7 @@ check "fandisk: ridges + valleys + user = total" [ "$((ridges + valleys + user))
 check "fandisk: no user lines without --feature-edges" [ "$user" -eq 0 ]
 check "fandisk: feature edges counted (${fedges:-none})" [ "${fedges:-0}" -gt 0 ]
 check "fandisk: feature edges <= edges" [ "${fedges:-0}" -le "$e" ]
-for stage in load curvature feature_lines total; do
+for stage in load curvature feature_lines segmentation total; do
   check "fandisk: seconds.$stage in summary" grep -Eq "^    \"$stage\": [0-9.e+-]+,?\$" "$summary"
 done
 lines="$(wc -l < "$out/feature_lines.polylines.txt")"
@@ -109,11 +150,59 @@ check "fandisk: OBJ v records ($obj_vertices) = polyline points ($poly_points) -
 check "fandisk: OBJ indices within 1..$obj_vertices" \
   awk -v n="$obj_vertices" '/^l /{ for (i = 2; i <= NF; i++) if ($i < 1 || $i > n) exit 1 }' "$out/feature_lines.obj"
 
-# Deterministic: a second run gives identical feature-line files.
+# The segmentation: patch count, cut cost and options in the summary; one patch id per
+# vertex and per face of the input file; the PLY mesh with a patch and colour per face.
+patches="$(json_int "$summary" segmentation patches)"
+cut_cost="$(json_number "$summary" segmentation cut_cost)"
+check "fandisk: segmentation.patches in summary (${patches:-none})" [ "${patches:-0}" -ge 1 ]
+check "fandisk: segmentation.cut_cost in summary (${cut_cost:-none})" [ -n "$cut_cost" ]
+check "fandisk: segmentation.solver_seconds in summary" \
+  [ -n "$(json_number "$summary" segmentation solver_seconds)" ]
+check "fandisk: options.alpha = 0.6 (the default)" [ "$(json_number "$summary" options alpha)" = 0.6 ]
+check "fandisk: options.gamma = 0.05 (the default)" [ "$(json_number "$summary" options gamma)" = 0.05 ]
+check "fandisk: options.solver = gaec+klj (the default)" grep -q '^    "solver": "gaec+klj"$' "$summary"
+# One patch: nothing is cut, so the cut cost is exactly 0; more: a minimiser kept a
+# partition cheaper than the single patch (cost 0), so the cost is negative.
+if [ "${patches:-0}" -eq 1 ]; then
+  check "fandisk: one patch, cut cost 0 (got $cut_cost)" awk -v c="$cut_cost" 'BEGIN { exit !(c == 0) }'
+else
+  check "fandisk: $patches patches, cut cost < 0 (got $cut_cost)" awk -v c="$cut_cost" 'BEGIN { exit !(c < 0) }'
+fi
+check "fandisk: vertex_patches.txt has one line per file vertex ($header_vertices)" \
+  [ "$(wc -l < "$out/vertex_patches.txt")" -eq "$header_vertices" ]
+check "fandisk: face_patches.txt has one line per file face ($header_faces)" \
+  [ "$(wc -l < "$out/face_patches.txt")" -eq "$header_faces" ]
+# Vertex labels are the clustering's, numbered 0..patches-1 without gaps. A face takes
+# the majority of its vertices' patches, so a patch of a few scattered vertices may own
+# no face: face ids are only checked to be in range.
+check "fandisk: vertex ids cover exactly [0, $patches)" ids_cover "$out/vertex_patches.txt" "$patches"
+check "fandisk: face ids in [0, $patches)" ids_in_range "$out/face_patches.txt" "$patches"
+check "fandisk: segmentation.ply: ASCII, $v vertices, $f faces, patch_id and colour per face" \
+  ply_header_ok "$out/segmentation.ply" "$v" "$f"
+# Nothing is repaired in fandisk, so the mesh keeps the file's face order: the PLY's
+# patch_id column is face_patches.txt.
+check "fandisk: segmentation.ply patch ids = face_patches.txt" \
+  cmp -s <(awk -v nv="$v" 'p && ++row > nv { print $5 } /^end_header$/ { p = 1 }' "$out/segmentation.ply") \
+         "$out/face_patches.txt"
+check "fandisk: equal patch ids have equal colours in segmentation.ply" \
+  awk -v nv="$v" 'p && ++row > nv { c = $6 " " $7 " " $8; if (($5 in col) && col[$5] != c) exit 1; col[$5] = c }
+                  /^end_header$/ { p = 1 }' "$out/segmentation.ply"
+# CGAL's PLY reader (read_polygon_soup, through the program itself) reads it back: the
+# same mesh, so the same feature lines.
+run ply_back "$out/segmentation.ply" --output-dir "$work/ply_back" --quiet
+check "segmentation.ply read back: exit status 0 (stderr: $(tail -n 1 "$work/ply_back.err"))" [ "$rc" -eq 0 ]
+check "segmentation.ply read back: $v vertices, $f faces" \
+  [ "$(json_int "$work/ply_back/summary.json" mesh vertices)" = "$v" ] && \
+  [ "$(json_int "$work/ply_back/summary.json" mesh faces)" = "$f" ]
+check "segmentation.ply read back: same feature lines" \
+  cmp -s "$work/ply_back/feature_lines.polylines.txt" "$out/feature_lines.polylines.txt"
+
+# Deterministic: a second run gives identical feature-line and segmentation files.
 run fandisk_again "$fandisk" --output-dir "$work/fandisk_again" --quiet
 check "fandisk again: exit status 0" [ "$rc" -eq 0 ]
 check "fandisk again: --quiet prints nothing on stderr" [ ! -s "$work/fandisk_again.err" ]
-for f in feature_lines.polylines.txt feature_lines.obj; do
+for f in feature_lines.polylines.txt feature_lines.obj segmentation.ply face_patches.txt \
+         vertex_patches.txt; do
   check "fandisk: $f identical over two runs" cmp -s "$out/$f" "$work/fandisk_again/$f"
 done
 
@@ -129,6 +218,30 @@ check "--strength-threshold 1e9: no feature lines" \
   [ "$(json_int "$work/no_lines/summary.json" feature_lines total)" = 0 ]
 check "--strength-threshold 1e9: empty polylines file" [ ! -s "$work/no_lines/feature_lines.polylines.txt" ]
 check "--rings 1 recorded in summary" grep -q '^    "rings": 1,$' "$work/no_lines/summary.json"
+
+# alpha weighs the feature edges: a larger alpha cuts more of them. Measured on fandisk
+# with the default solver: 1 patch at alpha 0.4, 12 at alpha 1.0; asserted: strictly
+# more patches at 1.0 than at 0.4 (GAEC+KLj is a heuristic, so the direction of the
+# change is what the method promises, not the counts).
+run alpha_low "$fandisk" --output-dir "$work/alpha_low" --alpha 0.4 --quiet
+check "--alpha 0.4: exit status 0" [ "$rc" -eq 0 ]
+run alpha_high "$fandisk" --output-dir "$work/alpha_high" --alpha 1.0 --quiet
+check "--alpha 1.0: exit status 0" [ "$rc" -eq 0 ]
+patches_low="$(json_int "$work/alpha_low/summary.json" segmentation patches)"
+patches_high="$(json_int "$work/alpha_high/summary.json" segmentation patches)"
+check "--alpha 0.4 / 1.0: patches ${patches_low:-none} < ${patches_high:-none}" \
+  [ "${patches_low:-0}" -ge 1 ] && [ "${patches_high:-0}" -gt "${patches_low:-0}" ]
+check "--alpha 1.0 recorded in summary" [ "$(json_number "$work/alpha_high/summary.json" options alpha)" = 1 ]
+run gamma "$fandisk" --output-dir "$work/gamma" --gamma 0 --quiet
+check "--gamma 0: exit status 0" [ "$rc" -eq 0 ]
+check "--gamma 0 recorded in summary" [ "$(json_number "$work/gamma/summary.json" options gamma)" = 0 ]
+for solver in gaec klj; do
+  run "solver_$solver" "$fandisk" --output-dir "$work/solver_$solver" --solver "$solver" --quiet
+  check "--solver $solver: exit status 0 (stderr: $(tail -n 1 "$work/solver_$solver.err"))" [ "$rc" -eq 0 ]
+  check "--solver $solver recorded in summary" grep -q "^    \"solver\": \"$solver\"\$" "$work/solver_$solver/summary.json"
+  n="$(json_int "$work/solver_$solver/summary.json" segmentation patches)"
+  check "--solver $solver: vertex ids cover [0, ${n:-none})" ids_cover "$work/solver_$solver/vertex_patches.txt" "${n:-0}"
+done
 
 # User feature lines: the first two edges of face 0 of fandisk, as one polyline.
 first_face=$((4 + 3 * header_vertices)) # token index of face 0's vertex count
@@ -170,6 +283,57 @@ check "quad mesh: exit status 0 (stderr: $(tail -n 1 "$work/quad.err"))" [ "$rc"
 check "quad mesh: notice about triangulation" grep -q '^notice: .*triangulated 5 faces' "$work/quad.err"
 check "quad mesh: 10 triangles" [ "$(json_int "$work/quad/summary.json" mesh faces)" = 10 ]
 check "quad mesh: 4 border edges" [ "$(json_int "$work/quad/summary.json" mesh border_edges)" = 4 ]
+check "quad mesh: 8 lines in vertex_patches.txt" [ "$(wc -l < "$work/quad/vertex_patches.txt")" -eq 8 ]
+check "quad mesh: 5 lines in face_patches.txt (one per quad)" [ "$(wc -l < "$work/quad/face_patches.txt")" -eq 5 ]
+check "quad mesh: segmentation.ply has the 10 triangles" \
+  ply_header_ok "$work/quad/segmentation.ply" 8 10
+
+# ---- patch files in the file's order, through the repairs -------------------------------
+# The box again, with a duplicate of point 2 (point 8, used by face 2 instead of 2), a
+# point no face uses (point 9) and a duplicate of face 0 with the other orientation
+# (face 5). The mesh has 8 vertices and 10 triangles; the patch files have the file's 10
+# vertices and 6 faces. alpha 2 splits the box (measured: 2 patches).
+cat > "$work/box_duplicates.off" <<'END_OF_MESH'
+OFF
+10 6 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+1 1 0
+5 5 5
+4 0 3 2 1
+4 0 1 5 4
+4 1 8 6 5
+4 2 3 7 6
+4 3 0 4 7
+4 1 2 3 0
+END_OF_MESH
+run duplicates "$work/box_duplicates.off" --output-dir "$work/duplicates" --alpha 2
+check "duplicates: exit status 0 (stderr: $(tail -n 1 "$work/duplicates.err"))" [ "$rc" -eq 0 ]
+check "duplicates: notice about the removed vertices" \
+  grep -q '^notice: .*removed 2 duplicate or unused vertices' "$work/duplicates.err"
+check "duplicates: notice about the removed face" \
+  grep -q '^notice: .*removed 1 duplicate faces' "$work/duplicates.err"
+check "duplicates: mesh of 8 vertices and 10 faces" \
+  [ "$(json_int "$work/duplicates/summary.json" mesh vertices)" = 8 ] && \
+  [ "$(json_int "$work/duplicates/summary.json" mesh faces)" = 10 ]
+vp="$work/duplicates/vertex_patches.txt"; fp="$work/duplicates/face_patches.txt"
+line() { sed -n "$(($2 + 1))p" "$1"; }
+dup_patches="$(json_int "$work/duplicates/summary.json" segmentation patches)"
+check "duplicates: 10 lines in vertex_patches.txt" [ "$(wc -l < "$vp")" -eq 10 ]
+check "duplicates: 6 lines in face_patches.txt" [ "$(wc -l < "$fp")" -eq 6 ]
+check "duplicates: more than one patch (got ${dup_patches:-none})" [ "${dup_patches:-0}" -gt 1 ]
+check "duplicates: point 8 has the patch of point 2" [ "$(line "$vp" 8)" = "$(line "$vp" 2)" ]
+check "duplicates: the unused point 9 has patch -1" [ "$(line "$vp" 9)" = -1 ]
+check "duplicates: face 5 has the patch of face 0" [ "$(line "$fp" 5)" = "$(line "$fp" 0)" ]
+check "duplicates: vertex ids of points 0..8 cover [0, $dup_patches)" \
+  ids_cover <(head -n 9 "$vp") "${dup_patches:-0}"
+check "duplicates: face ids in [0, $dup_patches)" ids_in_range "$fp" "${dup_patches:-0}"
 
 # ---- the other formats -------------------------------------------------------------------
 # fandisk as OBJ: same mesh, same feature lines as from the OFF file.
@@ -309,6 +473,14 @@ expect_error threshold_suffix       2 '--strength-threshold'        "$fandisk" -
 expect_error threshold_nan          2 '--strength-threshold'        "$fandisk" --strength-threshold nan
 expect_error unknown_option         2 "unknown option '--unknown'"  "$fandisk" --unknown
 expect_error two_meshes             2 'more than one input mesh'    "$fandisk" "$fandisk"
+expect_error alpha_nan              2 '--alpha expects a finite'    "$fandisk" --alpha nan
+expect_error alpha_inf              2 '--alpha expects a finite'    "$fandisk" --alpha inf
+expect_error alpha_text             2 '--alpha expects a number'    "$fandisk" --alpha abc
+expect_error alpha_missing          2 '--alpha expects a value'     "$fandisk" --alpha
+expect_error gamma_negative         2 '--gamma must be >= 0'        "$fandisk" --gamma -1
+expect_error gamma_nan              2 '--gamma expects a finite'    "$fandisk" --gamma nan
+expect_error solver_unknown         2 "--solver must be .*'foo'"    "$fandisk" --solver foo
+expect_error solver_empty           2 '--solver must be'            "$fandisk" --solver=
 expect_error feature_edges_missing  1 'no such file'                "$fandisk" --feature-edges "$bad/missing.txt"
 expect_error feature_edges_bad      1 'not a vertex of the mesh'    "$fandisk" --feature-edges "$bad/not_edges.polylines.txt"
 
