@@ -71,8 +71,10 @@ struct Input_correspondence
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 
   /// For each point of the file, in file order: its mesh vertex; for a duplicate point,
-  /// the vertex of the first point at the same position; for a point of a pinched vertex
-  /// that was split, the first copy; `null_vertex()` for a point that no face uses.
+  /// the vertex of the first point at the same position; for a pinched vertex that was
+  /// split, the copy in the first face (in file order) that uses it (orient_polygon_soup
+  /// keeps the point's index for the faces around its first incident face);
+  /// `null_vertex()` for a point that no face uses.
   std::vector<vertex_descriptor> vertex_of_file_point;
   /// For each face of the file, in file order: its mesh face, the first triangle of a
   /// triangulated polygon; for a duplicate face, the face of its first occurrence.
@@ -536,6 +538,9 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
   }
 
   // One face at a time, so that each polygon's first triangle is known.
+  std::vector<std::size_t> file_face_of_polygon(polygons.size(), internal::no_index);
+  for(std::size_t f = polygon_of_file_face.size(); f-- > 0;)
+    file_face_of_polygon[polygon_of_file_face[f]] = f; // the first file face wins
   for(std::size_t p = 0; p < polygons.size(); ++p)
   {
     if(polygons[p].size() == 3)
@@ -546,7 +551,8 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
                               CGAL::parameters::visitor(
                                 internal::First_subface_visitor<Mesh>(first_triangle))) ||
        first_triangle == boost::graph_traits<Mesh>::null_face())
-      throw Input_error(path + ": " + internal::face_name(p) + " (a quad or polygon) cannot be triangulated");
+      throw Input_error(path + ": " + internal::face_name(file_face_of_polygon[p]) +
+                        " (a quad or polygon) cannot be triangulated");
     face_of_polygon[p] = first_triangle;
   }
   if(report.number_of_triangulated_faces > 0)

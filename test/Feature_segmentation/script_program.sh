@@ -335,6 +335,19 @@ check "duplicates: vertex ids of points 0..8 cover [0, $dup_patches)" \
   ids_cover <(head -n 9 "$vp") "${dup_patches:-0}"
 check "duplicates: face ids in [0, $dup_patches)" ids_in_range "$fp" "${dup_patches:-0}"
 
+# A bow tie: two triangles sharing only point 0, which the reader splits in two. The two
+# triangles are not connected, so they are two patches; point 0 has the patch of its copy
+# in the first face that uses it (face 0, with points 1 and 2).
+printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n' > "$work/bowtie.off"
+run bowtie "$work/bowtie.off" --output-dir "$work/bowtie" --quiet
+check "bow tie: exit status 0 (stderr: $(tail -n 1 "$work/bowtie.err"))" [ "$rc" -eq 0 ]
+check "bow tie: 6 mesh vertices (point 0 split)" [ "$(json_int "$work/bowtie/summary.json" mesh vertices)" = 6 ]
+check "bow tie: 2 patches" [ "$(json_int "$work/bowtie/summary.json" segmentation patches)" = 2 ]
+check "bow tie: 5 lines in vertex_patches.txt, 2 in face_patches.txt" \
+  [ "$(wc -l < "$work/bowtie/vertex_patches.txt")" -eq 5 ] && [ "$(wc -l < "$work/bowtie/face_patches.txt")" -eq 2 ]
+check "bow tie: point 0 in face 0's patch, points 3 and 4 in face 1's" \
+  [ "$(paste -s -d ' ' "$work/bowtie/vertex_patches.txt") / $(paste -s -d ' ' "$work/bowtie/face_patches.txt")" = "0 0 0 1 1 / 0 1" ]
+
 # ---- the other formats -------------------------------------------------------------------
 # fandisk as OBJ: same mesh, same feature lines as from the OFF file.
 awk -v V="$header_vertices" '
