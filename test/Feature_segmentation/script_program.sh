@@ -220,7 +220,7 @@ check "--strength-threshold 1e9: empty polylines file" [ ! -s "$work/no_lines/fe
 check "--rings 1 recorded in summary" grep -q '^    "rings": 1,$' "$work/no_lines/summary.json"
 
 # alpha weighs the feature edges: a larger alpha cuts more of them. Measured on fandisk
-# with the default solver: 1 patch at alpha 0.4, 12 at alpha 1.0; asserted: strictly
+# with the default solver: 1 patch at alpha 0.4, more than ten at 1.0; asserted: strictly
 # more patches at 1.0 than at 0.4 (GAEC+KLj is a heuristic, so the direction of the
 # change is what the method promises, not the counts).
 run alpha_low "$fandisk" --output-dir "$work/alpha_low" --alpha 0.4 --quiet
