@@ -105,14 +105,16 @@ FS::Correlation_clustering_graph weighted_vertex_graph(const Mesh& m, double alp
   return g;
 }
 
-// Runs segment_along_features with `solver` and returns the vertex labels in the order
-// of vertices(m); `cost` and `count` receive the cut cost and the returned patch count.
+// Runs segment_along_features with `solver` on the full vertex graph (the graph built
+// above, which the test can compare with) and returns the vertex labels in the order of
+// vertices(m); `cost` and `count` receive the cut cost and the returned patch count.
 template <typename Mesh, typename Solver>
 std::vector<std::size_t> segment_with(const Mesh& m, double alpha, const Solver& solver,
                                       double& cost, std::size_t& count)
 {
   auto vp = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m);
-  count = FS::segment_along_features(m, vp, FS::parameters::alpha(alpha).solver(solver).cut_cost_output(&cost));
+  count = FS::segment_along_features(
+    m, vp, FS::parameters::alpha(alpha).solver(solver).use_oversegmentation(false).cut_cost_output(&cost));
   std::vector<std::size_t> labels;
   for(auto v : vertices(m)) labels.push_back(get(vp, v));
   return labels;
@@ -195,9 +197,9 @@ double shipped_model_test(const Mesh& m, double alpha, const Solver& solver)
 
 BOOST_AUTO_TEST_SUITE(solver_concept)
 
-// On the four-lobed torus at alpha 1, the edges crossed by each of the four ridge and
-// four valley circles are negative (test_segmentation: 8 bands), and no other edge is:
-// the positive edges fall into the 8 bands between the circles.
+// On the four-lobed torus at alpha 1, the edges crossed by the four ridge and the four
+// valley circles are negative enough to be cut (test_segmentation: 8 bands), and each
+// band between two circles is held together by positive edges: 8 components.
 BOOST_AUTO_TEST_CASE(archetype_on_lobed_torus_surface_mesh)
 {
   archetype_test(fs_test::to_mesh<SM>(fs_test::Lobed_torus{}.soup(80, 64)), 1.0, 8u);
@@ -212,6 +214,27 @@ BOOST_AUTO_TEST_CASE(archetype_on_lobed_torus_polyhedron)
 BOOST_AUTO_TEST_CASE(archetype_on_icosphere)
 {
   archetype_test(fs_test::to_mesh<SM>(fs_test::icosphere(1., 3)), 1.0, 1u);
+}
+
+// With the default options the solver may be given another graph than the vertex graph
+// (the oversegmentation's reduced graph); the archetype must still be the one called,
+// once, and the reported cost must be that of the returned vertex patches.
+BOOST_AUTO_TEST_CASE(archetype_with_default_options)
+{
+  const SM m = fs_test::to_mesh<SM>(fs_test::Lobed_torus{}.soup(80, 64));
+  Call_record record;
+  auto vp = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m);
+  double cost = 0;
+  const std::size_t count = FS::segment_along_features(
+    m, vp, FS::parameters::alpha(1.0).solver(Solver_archetype(&record)).cut_cost_output(&cost));
+  BOOST_TEST(record.calls == 1u);
+  std::vector<std::size_t> labels;
+  for(auto v : vertices(m)) labels.push_back(get(vp, v));
+  std::vector<std::size_t> normalized = labels;
+  BOOST_TEST(FS::normalize_labels(normalized) == count);
+  BOOST_TEST(normalized == labels, boost::test_tools::per_element()); // already normalised
+  BOOST_TEST(cost == FS::cut_cost(weighted_vertex_graph(m, 1.0), labels), boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(count == 8u); // the eight bands between the crest circles, as on the full graph
 }
 
 // The library's own composition accepts a user model that is only copy constructible.
