@@ -10,7 +10,7 @@ the edges whose endpoints are in different clusters (the cut cost, see `cut_cost
 A positive weight asks for its endpoints to be in the same cluster, a negative weight for
 them to be separated; the number of clusters is not given but follows from the weights.
 
-The segmentation builds a `Correlation_clustering_graph` (on the faces of the mesh or on
+The segmentation builds a `Correlation_clustering_graph` (on the vertices of the mesh or on
 the patches of an oversegmentation) and hands it to a model of this concept; the same
 solver object may be called many times, e.g.\ after every edit of a weight parameter.
 Since the problem is NP-hard, models are heuristics: they differ in speed and in how

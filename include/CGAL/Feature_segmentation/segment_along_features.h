@@ -12,6 +12,7 @@
 #include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
 #include <CGAL/Feature_segmentation/Solver_sequence.h>
 #include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
+#include <CGAL/Feature_segmentation/internal/oversegmentation_impl.h>
 
 #include <algorithm>
 #include <array>
@@ -20,6 +21,14 @@
 
 namespace CGAL {
 namespace Feature_segmentation {
+/// \ingroup PkgFeatureSegmentationSegmentation
+/// The distance whose watershed makes the oversegmentation (paper, Section 3.3).
+enum class Watershed_distance
+{
+  ANISOTROPIC, ///< dual edges of length Similarity(e): the paper's choice, the default
+  GEODESIC     ///< dual edges of Euclidean length Award(e), as Mitani-Suzuki and Levy et al.
+};
+
 namespace internal {
 
 // The patch of a face from its vertices' patches: the majority; when the three differ,
@@ -54,6 +63,19 @@ void write_face_patches(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
 /// `compute_edge_weights()` (Eq. 1 and 3). Returns the number of patches and writes the
 /// patch of every vertex, numbered `0` to `n-1` in the order of the vertices.
 ///
+/// By default the clustering runs on the reduced graph G' of a watershed
+/// oversegmentation (paper, Section 3.3): the distance on the dual graph from the
+/// triangles that hold a feature edge (BGL's Dijkstra, dual edges of length
+/// Similarity(e)) is negated and flooded by the immersion watershed of Vincent and
+/// Soille; every vertex takes the majority basin of the basin triangles around it (ties:
+/// the smallest basin; a vertex with watershed triangles only: the basin of the nearest
+/// labelled vertex); the oversegments are the connected components of same-basin
+/// vertices joined by non-feature edges, so that every feature line is a boundary of the
+/// oversegmentation. G' has one node per oversegment and one edge per adjacent pair,
+/// weighted by the sum of the weights of the mesh edges between them; its clustering is
+/// pulled back to the vertices. `use_oversegmentation(false)` clusters the full vertex
+/// graph instead.
+///
 /// The vertex labels are the clustering's output; a patch's boundary is the dual of its
 /// cut edges. Faces get the patch of the majority of their three vertices, or the smallest
 /// of the three ids when all differ.
@@ -74,6 +96,9 @@ void write_face_patches(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
 ///     `umbilic_ratio`, `detect_ridges`, `detect_valleys`)
 ///   - `solver`: a model of `CorrelationClusteringSolver`, default
 ///     `Default_correlation_clustering_solver` (GAEC followed by Kernighan-Lin with joins)
+///   - `use_oversegmentation` (bool): solve on the watershed graph G' (default `true`) or
+///     on the full vertex graph
+///   - `watershed_distance` (`Watershed_distance`): default `Watershed_distance::ANISOTROPIC`
 ///   - `face_patch_map`: an optional output, a `WritablePropertyMap` from
 ///     `face_descriptor` to an integer type
 ///   - `cut_cost_output` (`double*`): an optional output, the cut cost of the result (Eq. 1)
@@ -98,12 +123,30 @@ std::size_t segment_along_features(const TriangleMesh& tm, VertexPatchMap vertex
     auto amap = get_parameter(np, internal_np::edge_alpha);
     for(std::size_t e = 0; e < alpha_e.size(); ++e) alpha_e[e] = get(amap, data.idx.edge_at(e));
   }
-  const Correlation_clustering_graph g = data.graph(alpha_e);
-  std::vector<std::size_t> labels;
   const auto solver = choose_parameter(get_parameter(np, internal_np::solver),
                                        Default_correlation_clustering_solver());
-  solver(g, labels);
-  CGAL_postcondition(labels.size() == g.number_of_nodes());
+  const bool reduced = choose_parameter(get_parameter(np, internal_np::use_oversegmentation), true);
+  const Watershed_distance distance = choose_parameter(get_parameter(np, internal_np::watershed_distance),
+                                                       Watershed_distance::ANISOTROPIC);
+  std::vector<std::size_t> labels;
+  if(reduced)
+  {
+    const internal::Oversegmentation os =
+      internal::compute_oversegmentation(data, distance == Watershed_distance::ANISOTROPIC);
+    internal::Reduced_graph rg;
+    rg.build(os.vertex_segment, os.number_of_segments, data.edge_vertices);
+    const Correlation_clustering_graph gr = rg.graph([&](std::size_t e) { return data.weight(e, alpha_e[e]); });
+    std::vector<std::size_t> segment_labels;
+    solver(gr, segment_labels);
+    CGAL_postcondition(segment_labels.size() == gr.number_of_nodes());
+    labels.resize(os.vertex_segment.size());
+    for(std::size_t v = 0; v < labels.size(); ++v) labels[v] = segment_labels[os.vertex_segment[v]];
+  }
+  else
+  {
+    solver(data.graph(alpha_e), labels);
+    CGAL_postcondition(labels.size() == data.idx.number_of_vertices());
+  }
   const std::size_t n = normalize_labels(labels);
 
   typedef typename boost::property_traits<VertexPatchMap>::value_type Id;
@@ -114,7 +157,14 @@ std::size_t segment_along_features(const TriangleMesh& tm, VertexPatchMap vertex
   if constexpr(!is_default_parameter<NamedParameters, internal_np::cut_cost_output_t>::value)
   {
     double* out = get_parameter(np, internal_np::cut_cost_output);
-    if(out != nullptr) *out = cut_cost(g, labels);
+    if(out != nullptr)
+    {
+      double cost = 0; // on the mesh's edges (equal to G''s cut cost: inner edges are never cut)
+      for(std::size_t e = 0; e < data.edge_vertices.size(); ++e)
+        if(labels[data.edge_vertices[e].first] != labels[data.edge_vertices[e].second])
+          cost += data.weight(e, alpha_e[e]);
+      *out = cost;
+    }
   }
   return n;
 }
