@@ -81,18 +81,11 @@ template <typename TriangleMesh, typename WeightMap,
 std::size_t compute_edge_weights(const TriangleMesh& tm, WeightMap weight,
                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
   const internal::Segmentation_options opt = internal::read_segmentation_options<TriangleMesh>(np);
   internal::Segmentation_data<TriangleMesh> data(tm);
   Feature_lines<TriangleMesh> lines;
   internal::prepare_segmentation_data(tm, np, opt, data, lines);
-  std::vector<double> alpha_e = data.default_alpha(opt.alpha);
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
-  {
-    auto amap = get_parameter(np, internal_np::edge_alpha);
-    for(std::size_t e = 0; e < alpha_e.size(); ++e) alpha_e[e] = get(amap, data.idx.edge_at(e));
-  }
+  const std::vector<double> alpha_e = internal::edge_alphas(data, opt, np);
   for(std::size_t e = 0; e < data.idx.number_of_edges(); ++e)
     put(weight, data.idx.edge_at(e), data.weight(e, alpha_e[e]));
   return data.number_of_feature_edges;

@@ -117,12 +117,7 @@ std::size_t segment_along_features(const TriangleMesh& tm, VertexPatchMap vertex
   Feature_lines<TriangleMesh> lines;
   internal::prepare_segmentation_data(tm, np, opt, data, lines);
 
-  std::vector<double> alpha_e = data.default_alpha(opt.alpha);
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
-  {
-    auto amap = get_parameter(np, internal_np::edge_alpha);
-    for(std::size_t e = 0; e < alpha_e.size(); ++e) alpha_e[e] = get(amap, data.idx.edge_at(e));
-  }
+  const std::vector<double> alpha_e = internal::edge_alphas(data, opt, np);
   const auto solver = choose_parameter(get_parameter(np, internal_np::solver),
                                        Default_correlation_clustering_solver());
   const bool reduced = choose_parameter(get_parameter(np, internal_np::use_oversegmentation), true);

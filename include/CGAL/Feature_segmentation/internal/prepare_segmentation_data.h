@@ -90,6 +90,28 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
   data.compute_terms(opt.gamma);
 }
 
+// alpha_e of every edge: from `edge_alpha_map` if given, else alpha on feature edges
+// and 0 elsewhere (paper, Eq. 3 and Section 4.1).
+template <typename TriangleMesh, typename NamedParameters>
+std::vector<double> edge_alphas(const Segmentation_data<TriangleMesh>& data,
+                                const Segmentation_options& opt, const NamedParameters& np)
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  std::vector<double> alpha_e = data.default_alpha(opt.alpha);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
+  {
+    auto amap = get_parameter(np, internal_np::edge_alpha);
+    for(std::size_t e = 0; e < alpha_e.size(); ++e)
+    {
+      alpha_e[e] = get(amap, data.idx.edge_at(e));
+      if(!std::isfinite(alpha_e[e]))
+        throw Invalid_input("edge_alpha_map holds a value that is not a finite number");
+    }
+  }
+  return alpha_e;
+}
+
 } // namespace internal
 } // namespace Feature_segmentation
 } // namespace CGAL
