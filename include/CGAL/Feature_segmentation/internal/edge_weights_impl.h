@@ -10,6 +10,8 @@
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 
+#include <CGAL/boost/graph/iterator.h>
+
 #include <Eigen/Dense>
 
 #include <array>
@@ -61,11 +63,11 @@ public:
   typedef Mesh_indexing<TriangleMesh> Indexing;
   typedef Eigen::Vector3d Vec3;
 
-  // `feature_points[e]`: sum and count of the feature points on edge e (count 0: none).
+  // `point_sum[e]`, `point_count[e]`: sum and count of the feature points on edge e.
   // `curvature_scale`: the length by which curvatures are multiplied before gamma applies.
   void compute(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
                const std::vector<char>& is_feature_edge,
-               const std::vector<Vec3>& feature_point_sum, const std::vector<int>& feature_point_count,
+               const std::vector<Vec3>& point_sum, const std::vector<int>& point_count,
                double gamma, double curvature_scale)
   {
     const TriangleMesh& tm = idx.mesh();
@@ -75,56 +77,78 @@ public:
     for(std::size_t f = 0; f < nf; ++f)
     {
       auto h = halfedge(idx.face_at(f), tm);
-      const std::array<std::size_t, 3> t = { idx.id(source(h, tm)), idx.id(target(h, tm)),
-                                             idx.id(target(next(h, tm), tm)) };
-      const std::array<std::size_t, 3> fe = { idx.edge_id(h), idx.edge_id(next(h, tm)),
-                                              idx.edge_id(prev(h, tm)) };
-      metrics[f] = triangle_metric(vin[t[0]], vin[t[1]], vin[t[2]], gamma, curvature_scale);
-      // dual vertex: centroid of the feature points on its feature edges, if any
-      // (a feature edge without located points contributes its midpoint), else centroid
-      Vec3 sum = Vec3::Zero();
-      int count = 0;
-      for(int c = 0; c < 3; ++c)
-      {
-        const std::size_t e = fe[c];
-        if(!is_feature_edge[e]) continue;
-        if(feature_point_count[e] > 0) { sum += feature_point_sum[e] / feature_point_count[e]; ++count; }
-        else
-        {
-          auto he = halfedge(idx.edge_at(e), tm);
-          sum += 0.5 * (vin[idx.id(source(he, tm))].p + vin[idx.id(target(he, tm))].p);
-          ++count;
-        }
-      }
-      dual_vertices[f] = count > 0 ? Vec3(sum / count) : Vec3((vin[t[0]].p + vin[t[1]].p + vin[t[2]].p) / 3.);
+      metrics[f] = triangle_metric(vin[idx.id(source(h, tm))], vin[idx.id(target(h, tm))],
+                                   vin[idx.id(target(next(h, tm), tm))], gamma, curvature_scale);
+      dual_vertices[f] = dual_vertex(idx, vin, is_feature_edge, point_sum, point_count, f);
     }
     similarity.assign(ne, 0.);
     award.assign(ne, 0.);
     for(std::size_t e = 0; e < ne; ++e)
+      edge_terms(idx, vin, point_sum, point_count, e);
+  }
+
+  // After the features of some edges changed (a sketch): the dual vertices of `faces`
+  // and the terms of their edges.
+  void update_faces(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+                    const std::vector<char>& is_feature_edge,
+                    const std::vector<Vec3>& point_sum, const std::vector<int>& point_count,
+                    const std::vector<std::size_t>& faces)
+  {
+    const TriangleMesh& tm = idx.mesh();
+    for(std::size_t f : faces)
+      dual_vertices[f] = dual_vertex(idx, vin, is_feature_edge, point_sum, point_count, f);
+    for(std::size_t f : faces)
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+        edge_terms(idx, vin, point_sum, point_count, idx.edge_id(h));
+  }
+
+  // Dual vertex: centroid of the feature points on the face's feature edges, if any (a
+  // feature edge without located points contributes its midpoint), else the centroid.
+  static Vec3 dual_vertex(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+                          const std::vector<char>& is_feature_edge,
+                          const std::vector<Vec3>& point_sum, const std::vector<int>& point_count,
+                          std::size_t f)
+  {
+    const TriangleMesh& tm = idx.mesh();
+    Vec3 sum = Vec3::Zero(), centroid = Vec3::Zero();
+    int count = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
     {
-      auto h = halfedge(idx.edge_at(e), tm);
-      const std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
-      if(f1 != Indexing::npos && f2 != Indexing::npos)
-      {
-        const Vec3 w = dual_vertices[f2] - dual_vertices[f1];
-        similarity[e] = 0.5 * (metrics[f1].anisotropic(w) + metrics[f2].anisotropic(w));
-        award[e] = 0.5 * (metrics[f1].euclidean(w) + metrics[f2].euclidean(w));
-      }
-      else
-      {
-        // Border edge: a boundary cutting it runs from the dual vertex of its one face
-        // to the edge; the half segment from the dual vertex to the edge's feature
-        // point (or midpoint) takes the place of the dual segment.
-        const std::size_t f = (f1 != Indexing::npos) ? f1 : f2;
-        if(f == Indexing::npos) continue; // an isolated edge: no face, weight 0
-        const Vec3 end = feature_point_count[e] > 0
-                           ? Vec3(feature_point_sum[e] / feature_point_count[e])
-                           : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
-        const Vec3 w = end - dual_vertices[f];
-        similarity[e] = metrics[f].anisotropic(w);
-        award[e] = metrics[f].euclidean(w);
-      }
+      centroid += vin[idx.id(target(h, tm))].p / 3.;
+      const std::size_t e = idx.edge_id(h);
+      if(!is_feature_edge[e]) continue;
+      sum += point_count[e] > 0 ? Vec3(point_sum[e] / point_count[e])
+                                : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
+      ++count;
     }
+    return count > 0 ? Vec3(sum / count) : centroid;
+  }
+
+  void edge_terms(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+                  const std::vector<Vec3>& point_sum, const std::vector<int>& point_count, std::size_t e)
+  {
+    const TriangleMesh& tm = idx.mesh();
+    auto h = halfedge(idx.edge_at(e), tm);
+    const std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
+    similarity[e] = award[e] = 0.;
+    if(f1 != Indexing::npos && f2 != Indexing::npos)
+    {
+      const Vec3 w = dual_vertices[f2] - dual_vertices[f1];
+      similarity[e] = 0.5 * (metrics[f1].anisotropic(w) + metrics[f2].anisotropic(w));
+      award[e] = 0.5 * (metrics[f1].euclidean(w) + metrics[f2].euclidean(w));
+      return;
+    }
+    // Border edge: a boundary cutting it runs from the dual vertex of its one face to the
+    // edge; the half segment from the dual vertex to the edge's feature point (or
+    // midpoint) takes the place of the dual segment.
+    const std::size_t f = (f1 != Indexing::npos) ? f1 : f2;
+    if(f == Indexing::npos) return; // an isolated edge: no face, weight 0
+    const Vec3 end = point_count[e] > 0
+                       ? Vec3(point_sum[e] / point_count[e])
+                       : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
+    const Vec3 w = end - dual_vertices[f];
+    similarity[e] = metrics[f].anisotropic(w);
+    award[e] = metrics[f].euclidean(w);
   }
 
   // Per-triangle tensor: the vertices' curvature tensors k1 d1 d1^T + k2 d2 d2^T are

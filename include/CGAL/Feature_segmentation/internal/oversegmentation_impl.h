@@ -32,7 +32,12 @@ struct Oversegmentation
 
 // From face basins to vertex oversegments: see the three steps below.
 template <typename TriangleMesh>
-Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>& data, bool anisotropic)
+//
+// With `vertex_in_region`, only the region is oversegmented (a sketch edit redoes the
+// patches it touches): the faces whose three vertices are in the region, and the
+// region's vertices; the others get `std::size_t(-1)` in `vertex_segment`.
+Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>& data, bool anisotropic,
+                                          const std::vector<char>* vertex_in_region = nullptr)
 {
   const auto& idx = data.idx;
   const TriangleMesh& tm = idx.mesh();
@@ -41,11 +46,18 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   // distance) or Award (Euclidean, the geodesic variant of Mitani-Suzuki and Levy et al.)
   std::vector<std::pair<std::size_t, std::size_t> > dual;
   std::vector<double> len;
-  std::vector<char> source(nf, 0);
+  std::vector<char> source(nf, 0), face_in(nf, 1);
+  auto in_region = [&](std::size_t v) { return vertex_in_region == nullptr || (*vertex_in_region)[v] != 0; };
+  if(vertex_in_region != nullptr)
+    for(std::size_t f = 0; f < nf; ++f)
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+        if(!in_region(idx.id(target(h, tm)))) face_in[f] = 0;
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
   {
     auto h = halfedge(idx.edge_at(e), tm);
-    const std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
+    std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
+    if(f1 != Mesh_indexing<TriangleMesh>::npos && !face_in[f1]) f1 = Mesh_indexing<TriangleMesh>::npos;
+    if(f2 != Mesh_indexing<TriangleMesh>::npos && !face_in[f2]) f2 = Mesh_indexing<TriangleMesh>::npos;
     if(data.is_feature_edge[e])
     {
       if(f1 != Mesh_indexing<TriangleMesh>::npos) source[f1] = 1;
@@ -60,6 +72,8 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   for(double& h : height) h = -h; // basins lie far from the features
   Oversegmentation os;
   os.face_basin = immersion_watershed(g, height, &os.number_of_basins);
+  for(std::size_t f = 0; f < nf; ++f)
+    if(!face_in[f]) os.face_basin[f] = watershed_label; // outside the region: not a basin face
 
   // 1. Majority basin of the basin faces around each vertex, ties to the smallest id.
   const std::size_t none = std::size_t(-1);
@@ -67,6 +81,7 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   std::vector<std::pair<long, int> > counts;
   for(std::size_t v = 0; v < nv; ++v)
   {
+    if(!in_region(v)) continue;
     counts.clear();
     for(auto h : CGAL::halfedges_around_target(idx.vertex_at(v), tm))
     {
@@ -86,13 +101,14 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   // Vertex adjacency through non-feature edges (feature edges are never crossed below).
   std::vector<std::size_t> adj_begin(nv + 1, 0), adj;
   for(std::size_t e = 0; e < data.edge_vertices.size(); ++e)
-    if(!data.is_feature_edge[e]) { ++adj_begin[data.edge_vertices[e].first + 1]; ++adj_begin[data.edge_vertices[e].second + 1]; }
+    if(!data.is_feature_edge[e] && in_region(data.edge_vertices[e].first) && in_region(data.edge_vertices[e].second))
+    { ++adj_begin[data.edge_vertices[e].first + 1]; ++adj_begin[data.edge_vertices[e].second + 1]; }
   for(std::size_t v = 0; v < nv; ++v) adj_begin[v + 1] += adj_begin[v];
   adj.resize(adj_begin[nv]);
   {
     std::vector<std::size_t> fill(adj_begin.begin(), adj_begin.end() - 1);
     for(std::size_t e = 0; e < data.edge_vertices.size(); ++e)
-      if(!data.is_feature_edge[e])
+      if(!data.is_feature_edge[e] && in_region(data.edge_vertices[e].first) && in_region(data.edge_vertices[e].second))
       {
         const auto& ev = data.edge_vertices[e];
         adj[fill[ev.first]++] = ev.second;
@@ -117,7 +133,7 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   std::vector<std::size_t> stack;
   for(std::size_t v = 0; v < nv; ++v)
   {
-    if(seg[v] != none) continue;
+    if(seg[v] != none || !in_region(v)) continue;
     seg[v] = k;
     stack.assign(1, v);
     while(!stack.empty())
