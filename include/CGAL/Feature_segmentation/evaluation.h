@@ -1,0 +1,384 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Quality measures of a mesh segmentation, for benchmarks and regression tests: the cut
+// cost of Eq. 1 and the patch count; against a ground-truth face labelling, boundary
+// precision, recall and F-score within a distance tolerance, the Rand index and the
+// over- and under-segmentation counts; against the input feature lines, with no ground
+// truth, how much strong feature-line length a patch boundary follows (coverage) and how
+// much boundary runs away from every feature line (redundancy). Every measure works on
+// face labels, so that segmentations from any method (this package's, CGAL's sharp-edge
+// segmentation, variational shape approximation) are scored the same way.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_EVALUATION_H
+#define CGAL_FEATURE_SEGMENTATION_EVALUATION_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/input_checks.h>
+#include <CGAL/Feature_segmentation/internal/evaluation_impl.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The default distance tolerance of the boundary measures, as a fraction of the
+/// diagonal of the mesh's bounding box (1%).
+constexpr double default_relative_boundary_tolerance = 0.01;
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The default strength above which a feature line counts as strong in
+/// `compare_with_feature_lines()`: lines of strength at least 10 (the integral of
+/// |curvature| along the line, see `Feature_line::strength`) are the clear creases and
+/// crest lines; the default pruning threshold `default_strength_threshold` keeps weaker ones.
+constexpr double default_strong_feature_strength = 10.0;
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The default significance of `compare_partitions()`: a patch counts as a piece of a
+/// reference patch when it holds at least 10% of that reference patch's area.
+constexpr double default_significant_overlap = 0.1;
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The length of the diagonal of the bounding box of `tm`'s vertices.
+/// \param np optional named parameters: `vertex_point_map`
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double bounding_box_diagonal(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  bool first = true;
+  for(auto v : vertices(tm))
+  {
+    const internal::Evaluation_point p = internal::to_evaluation_point(get(vpm, v));
+    for(int i = 0; i < 3; ++i)
+    {
+      lo[i] = first ? p[i] : (std::min)(lo[i], p[i]);
+      hi[i] = first ? p[i] : (std::max)(hi[i], p[i]);
+    }
+    first = false;
+  }
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The default boundary tolerance of `tm`: `default_relative_boundary_tolerance` times
+/// `bounding_box_diagonal()`.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double default_boundary_tolerance(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return default_relative_boundary_tolerance * bounding_box_diagonal(tm, np);
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The number of distinct patch ids among the faces of `tm`.
+/// \tparam FacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
+template <typename TriangleMesh, typename FacePatchMap>
+std::size_t number_of_patches(const TriangleMesh& tm, FacePatchMap face_patch)
+{
+  typedef typename boost::property_traits<FacePatchMap>::value_type Id;
+  std::unordered_set<Id> ids;
+  for(auto f : faces(tm)) ids.insert(get(face_patch, f));
+  return ids.size();
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The cut cost of a vertex labelling (paper, Eq. 1): the sum of the weights of the edges
+/// whose two vertices have different patches. With the weights of
+/// `compute_edge_weights()`, lower is better; it is the quantity the correlation
+/// clustering minimises.
+/// \tparam VertexPatchMap a `ReadablePropertyMap` from `vertex_descriptor` to an integer type
+/// \tparam EdgeWeightMap a `ReadablePropertyMap` from `edge_descriptor` to a floating-point type
+template <typename TriangleMesh, typename VertexPatchMap, typename EdgeWeightMap>
+double cut_cost(const TriangleMesh& tm, VertexPatchMap vertex_patch, EdgeWeightMap weight)
+{
+  double cost = 0;
+  for(auto e : edges(tm))
+  {
+    auto h = halfedge(e, tm);
+    if(get(vertex_patch, source(h, tm)) != get(vertex_patch, target(h, tm)))
+      cost += CGAL::to_double(get(weight, e));
+  }
+  return cost;
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// Derives a vertex labelling from a face labelling, so that `cut_cost()` can score
+/// methods that label faces: every vertex takes the patch held by most of its incident
+/// faces, the smallest id on a tie. An isolated vertex gets `isolated_id`.
+/// \tparam FacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
+/// \tparam VertexPatchMap a `WritablePropertyMap` from `vertex_descriptor` to the same type
+template <typename TriangleMesh, typename FacePatchMap, typename VertexPatchMap>
+void vertex_patches_from_face_patches(const TriangleMesh& tm, FacePatchMap face_patch, VertexPatchMap vertex_patch,
+                                      typename boost::property_traits<FacePatchMap>::value_type isolated_id = 0)
+{
+  typedef typename boost::property_traits<FacePatchMap>::value_type Id;
+  std::map<Id, std::size_t> count;
+  for(auto v : vertices(tm))
+  {
+    count.clear();
+    for(auto f : faces_around_target(halfedge(v, tm), tm))
+      if(f != boost::graph_traits<TriangleMesh>::null_face()) ++count[get(face_patch, f)];
+    Id best = isolated_id;
+    std::size_t best_count = 0;
+    for(const auto& c : count) // ascending ids: the first maximum is the smallest id
+      if(c.second > best_count) { best = c.first; best_count = c.second; }
+    put(vertex_patch, v, best);
+  }
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// Boundary precision and recall of a segmentation against a reference. Lengths are in
+/// the mesh's units.
+struct Boundary_scores
+{
+  double precision = 1.;        ///< share of the boundary length within the tolerance of the reference boundary (1 if there is no boundary)
+  double recall = 1.;           ///< share of the reference boundary length within the tolerance of the boundary (1 if the reference has none)
+  double f_score = 1.;          ///< harmonic mean of precision and recall (0 if both are 0)
+  double boundary_length = 0.;  ///< total length of the segmentation's boundary
+  double reference_length = 0.; ///< total length of the reference boundary
+};
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// Scores the patch boundaries of `face_patch` against those of `reference_face_patch`
+/// on the same mesh. A patch boundary is the set of edges whose two faces have different
+/// patches (border edges are not boundaries). A boundary edge is matched when its
+/// midpoint lies within `tolerance` of an edge of the other boundary; precision is the
+/// matched share of the segmentation's boundary length, recall the matched share of the
+/// reference boundary length (edges weighted by their length, so that the scores do not
+/// depend on the mesh's resolution).
+///
+/// \tparam FacePatchMap, ReferenceFacePatchMap `ReadablePropertyMap`s from
+///         `face_descriptor` to integer types
+/// \param tolerance the distance tolerance, in the mesh's units, for example
+///        `default_boundary_tolerance(tm)` (1% of the bounding-box diagonal)
+/// \param np optional named parameters: `vertex_point_map`
+/// \throws Invalid_input if `tolerance` is negative or not finite
+template <typename TriangleMesh, typename FacePatchMap, typename ReferenceFacePatchMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Boundary_scores compare_boundaries(const TriangleMesh& tm, FacePatchMap face_patch,
+                                   ReferenceFacePatchMap reference_face_patch, double tolerance,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw Invalid_input("the boundary tolerance must be a finite number >= 0 (got " + std::to_string(tolerance) + ")");
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto mine = internal::patch_boundary_segments(tm, face_patch, vpm);
+  const auto theirs = internal::patch_boundary_segments(tm, reference_face_patch, vpm);
+  const internal::Segment_distance to_mine(mine), to_theirs(theirs);
+  Boundary_scores s;
+  s.boundary_length = internal::total_length(mine);
+  s.reference_length = internal::total_length(theirs);
+  if(s.boundary_length > 0) s.precision = internal::matched_length(mine, to_theirs, tolerance) / s.boundary_length;
+  if(s.reference_length > 0) s.recall = internal::matched_length(theirs, to_mine, tolerance) / s.reference_length;
+  s.f_score = (s.precision + s.recall > 0) ? 2 * s.precision * s.recall / (s.precision + s.recall) : 0.;
+  return s;
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// The Rand index of two labellings of the same elements, each element weighted: the
+/// weighted share of the pairs of distinct elements on which the labellings agree (both
+/// put the two elements in one patch, or both separate them). A pair `(i, j)` weighs
+/// `weights[i] * weights[j]`; with unit weights this is the classical Rand index
+/// (Rand 1971), computed from the contingency table in linear time. 1 means identical
+/// partitions.
+/// \tparam LabelA, LabelB integer types
+/// \param a, b the labellings (same size, at least two elements)
+/// \param weights one non-negative weight per element (empty: all weights 1)
+/// \pre `a.size() == b.size()` and `weights` is empty or of the same size
+template <typename LabelA, typename LabelB>
+double rand_index(const std::vector<LabelA>& a, const std::vector<LabelB>& b,
+                  const std::vector<double>& weights = std::vector<double>())
+{
+  CGAL_precondition(a.size() == b.size());
+  CGAL_precondition(weights.empty() || weights.size() == a.size());
+  const std::vector<double> w = weights.empty() ? std::vector<double>(a.size(), 1.) : weights;
+  std::size_t na = 0, nb = 0;
+  const std::vector<std::size_t> ca = internal::compact_labels(a, na), cb = internal::compact_labels(b, nb);
+  const internal::Contingency_table t(ca, na, cb, nb, w);
+  // Weight of the unordered pairs of distinct elements inside groups of total weight W
+  // made of elements whose squared weights sum to Q: (W^2 - Q) / 2, summed over groups.
+  double same_ab = 0, same_a = 0, same_b = 0;
+  for(const auto& c : t.cells) same_ab += c.second * c.second;
+  for(double r : t.row) same_a += r * r;
+  for(double c : t.column) same_b += c * c;
+  const double q = t.sum_of_squared_weights;
+  const double pairs = (t.total * t.total - q) / 2;
+  if(!(pairs > 0)) return 1.;
+  same_ab = (same_ab - q) / 2;
+  same_a = (same_a - q) / 2;
+  same_b = (same_b - q) / 2;
+  // agreements = pairs together in both + pairs apart in both
+  const double agree = same_ab + (pairs - same_a - same_b + same_ab);
+  return agree / pairs;
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// How a segmentation's patches relate to reference patches.
+struct Partition_scores
+{
+  double rand_index = 1.;             ///< area-weighted Rand index of the face labellings
+  std::size_t over_segmentation = 0;  ///< extra pieces: sum over reference patches of (significant pieces - 1)
+  std::size_t under_segmentation = 0; ///< merges: sum over patches of (reference patches it significantly covers - 1)
+};
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// Compares two face labellings given as vectors (one label and one weight per face).
+/// A patch `P` is a significant piece of a reference patch `R` when the weight of
+/// `P` and `R`'s common faces is at least `significant_overlap` times `R`'s weight.
+/// `over_segmentation` sums, over the reference patches, the number of their significant
+/// pieces minus one (a reference patch split in three counts 2); `under_segmentation`
+/// sums, over the patches, the number of reference patches of which they are a
+/// significant piece, minus one (one patch spanning three reference patches counts 2).
+/// Both are 0 for identical partitions; a single patch against `n` reference patches
+/// gives `under_segmentation == n - 1`.
+/// \pre the three vectors have the same size; `0 < significant_overlap <= 1`
+template <typename Label, typename ReferenceLabel>
+Partition_scores compare_partitions(const std::vector<Label>& labels, const std::vector<ReferenceLabel>& reference,
+                                    const std::vector<double>& weights,
+                                    double significant_overlap = default_significant_overlap)
+{
+  CGAL_precondition(labels.size() == reference.size() && weights.size() == labels.size());
+  CGAL_precondition(significant_overlap > 0 && significant_overlap <= 1);
+  Partition_scores s;
+  s.rand_index = rand_index(labels, reference, weights);
+  std::size_t na = 0, nb = 0;
+  const std::vector<std::size_t> ca = internal::compact_labels(labels, na), cb = internal::compact_labels(reference, nb);
+  const internal::Contingency_table t(ca, na, cb, nb, weights);
+  std::vector<std::size_t> pieces_of_reference(nb, 0), references_of_patch(na, 0);
+  for(const auto& c : t.cells)
+  {
+    const std::size_t i = c.first / nb, j = c.first % nb;
+    if(c.second > 0 && c.second >= significant_overlap * t.column[j])
+    {
+      ++pieces_of_reference[j];
+      ++references_of_patch[i];
+    }
+  }
+  for(std::size_t k : pieces_of_reference) s.over_segmentation += (k > 1) ? k - 1 : 0;
+  for(std::size_t k : references_of_patch) s.under_segmentation += (k > 1) ? k - 1 : 0;
+  return s;
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// Compares the face labelling `face_patch` of `tm` with the reference labelling
+/// `reference_face_patch` (a ground truth), every face weighted by its area: the
+/// area-weighted Rand index and the over- and under-segmentation counts of the vector
+/// overload of `compare_partitions()`.
+/// \tparam FacePatchMap, ReferenceFacePatchMap `ReadablePropertyMap`s from
+///         `face_descriptor` to integer types
+/// \param np optional named parameters: `vertex_point_map`
+template <typename TriangleMesh, typename FacePatchMap, typename ReferenceFacePatchMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Partition_scores compare_partitions(const TriangleMesh& tm, FacePatchMap face_patch,
+                                    ReferenceFacePatchMap reference_face_patch,
+                                    double significant_overlap = default_significant_overlap,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  typedef typename boost::property_traits<FacePatchMap>::value_type Id;
+  typedef typename boost::property_traits<ReferenceFacePatchMap>::value_type Reference_id;
+  std::vector<Id> a;
+  std::vector<Reference_id> b;
+  std::vector<double> w;
+  for(auto f : faces(tm))
+  {
+    a.push_back(get(face_patch, f));
+    b.push_back(get(reference_face_patch, f));
+    auto h = halfedge(f, tm);
+    w.push_back(std::sqrt(CGAL::to_double(internal::Evaluation_kernel::Triangle_3(
+      internal::to_evaluation_point(get(vpm, source(h, tm))), internal::to_evaluation_point(get(vpm, target(h, tm))),
+      internal::to_evaluation_point(get(vpm, target(next(h, tm), tm)))).squared_area())));
+  }
+  return compare_partitions(a, b, w, significant_overlap);
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// How the patch boundaries of a segmentation follow the feature lines it was meant to
+/// follow, without a ground truth. Lengths are in the mesh's units.
+struct Feature_line_scores
+{
+  double coverage = 1.;            ///< share of the strong feature-line length within the tolerance of a patch boundary (1 if no line is strong)
+  double strong_length = 0.;       ///< total length of the strong feature lines
+  double redundant_length = 0.;    ///< boundary length farther than the tolerance from every feature line
+  double boundary_length = 0.;     ///< total length of the patch boundaries
+  /// `redundant_length / boundary_length`, 0 without boundary.
+  double redundancy_fraction() const { return boundary_length > 0 ? redundant_length / boundary_length : 0.; }
+};
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// Scores the patch boundaries of `face_patch` against feature lines (for example those
+/// of `detect_feature_lines()`). Coverage: every segment of a strong line (strength at
+/// least `strong_strength`) is covered when its midpoint lies within `tolerance` of a
+/// patch-boundary edge; coverage is the covered share of the strong length. Redundancy:
+/// the length of the patch-boundary edges whose midpoint is farther than `tolerance` from
+/// every segment of every line in `lines` (weak ones included: a boundary along a weak
+/// line is not invented), that is, boundary that no feature supports.
+///
+/// \tparam FacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
+/// \param tolerance the distance tolerance, for example `default_boundary_tolerance(tm)`
+/// \param strong_strength the strength from which a line is strong
+/// \param np optional named parameters: `vertex_point_map`
+/// \throws Invalid_input if `tolerance` is negative or not finite
+template <typename TriangleMesh, typename FacePatchMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Feature_line_scores compare_with_feature_lines(const TriangleMesh& tm, FacePatchMap face_patch,
+                                               const Feature_lines<TriangleMesh>& lines, double tolerance,
+                                               double strong_strength = default_strong_feature_strength,
+                                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw Invalid_input("the boundary tolerance must be a finite number >= 0 (got " + std::to_string(tolerance) + ")");
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  std::vector<internal::Evaluation_segment> all, strong;
+  for(const auto& l : lines.lines)
+  {
+    const std::size_t n = l.points.size();
+    const std::size_t m = l.is_closed ? n : (n > 0 ? n - 1 : 0);
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      const internal::Evaluation_segment s(internal::to_evaluation_point(l.points[i].point(tm, vpm)),
+                                           internal::to_evaluation_point(l.points[(i + 1) % n].point(tm, vpm)));
+      all.push_back(s);
+      if(l.strength >= strong_strength) strong.push_back(s);
+    }
+  }
+  const auto boundary = internal::patch_boundary_segments(tm, face_patch, vpm);
+  const internal::Segment_distance to_boundary(boundary), to_lines(all);
+  Feature_line_scores s;
+  s.strong_length = internal::total_length(strong);
+  s.boundary_length = internal::total_length(boundary);
+  if(s.strong_length > 0) s.coverage = internal::matched_length(strong, to_boundary, tolerance) / s.strong_length;
+  s.redundant_length = s.boundary_length - internal::matched_length(boundary, to_lines, tolerance);
+  return s;
+}
+
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_FEATURE_SEGMENTATION_EVALUATION_H
