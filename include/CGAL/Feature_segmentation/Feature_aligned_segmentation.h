@@ -1,0 +1,495 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The class for the precompute-and-reuse path (paper, Sections 3.3 and 4): it keeps the
+// curvature, the feature lines, the Similarity and Award terms, the watershed
+// oversegmentation and the reduced graph G', and answers the paper's edits (global and
+// local refine/coarsen, feature sketching, merging, undo) by re-weighting and re-solving
+// G' only, never redoing what an edit does not invalidate.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_FEATURE_ALIGNED_SEGMENTATION_H
+#define CGAL_FEATURE_SEGMENTATION_FEATURE_ALIGNED_SEGMENTATION_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/internal/oversegmentation_impl.h>
+#include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
+#include <CGAL/Feature_segmentation/internal/sketch_walk.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+
+/// \ingroup PkgFeatureSegmentationSegmentation
+/// Feature-aligned segmentation with interactive edits.
+///
+/// The constructor does all the precomputation of `segment_along_features()` once:
+/// curvature, feature lines, the terms Similarity and Award of every edge, the watershed
+/// oversegmentation and the reduced graph G', then solves. Every edit changes the
+/// per-edge parameters `alpha_e` (or the features, or merge constraints), re-weights G'
+/// and re-solves, and returns the new number of patches:
+///
+/// | edit | what it recomputes | cost |
+/// |---|---|---|
+/// | `set_alpha()` (global refine/coarsen) | the weights of G', the clustering of G' | O(E') + solve on G' |
+/// | `add_to_alpha()`, `multiply_alpha()` (local) | the same, on the patches the region touches only | O(E' in those patches) + solve on them |
+/// | `merge_patches()` | the labels (a constraint that later solves keep) | O(V) |
+/// | `add_sketch()` | terms of the faces around the sketch, the oversegmentation inside the patches it touches, G', their clustering | O(faces in those patches log) + O(E) |
+/// | `undo()` | restores the state before the last edit | O(V) (plus a copy of the features for a sketch) |
+///
+/// where E' is the number of edges of G' (a few thousand on a 200k-face CAD model).
+/// Local edits and sketches re-solve only the current patches they touch, so the other
+/// patches keep their vertices (their ids may change: ids are renumbered in vertex order
+/// after each edit).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`; the mesh must outlive the object and
+///         stay unchanged.
+template <typename TriangleMesh>
+class Feature_aligned_segmentation
+{
+public:
+  /// \name Types
+  /// @{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor; ///< vertex type
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;     ///< edge type
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;     ///< face type
+  /// The point type of the mesh's vertex point map.
+  typedef typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point_3;
+  /// A point of a sketch: a point on the surface and the face that contains it.
+  struct Sketch_point
+  {
+    face_descriptor face; ///< the face containing `point`
+    Point_3 point;        ///< the point
+  };
+  /// @}
+
+  /// Precomputes and solves. The named parameters are those of
+  /// `segment_along_features()` except the outputs (`face_patch_map`, `cut_cost_output`);
+  /// the solver is kept for every later solve.
+  /// \throws Invalid_input on a bad mesh or a bad option value
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Feature_aligned_segmentation(const TriangleMesh& tm,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+    : m_data(tm)
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    m_opt = internal::read_segmentation_options<TriangleMesh>(np);
+    internal::prepare_segmentation_data(tm, np, m_opt, m_data, m_lines);
+    m_anisotropic = choose_parameter(get_parameter(np, internal_np::watershed_distance),
+                                     Watershed_distance::ANISOTROPIC) == Watershed_distance::ANISOTROPIC;
+    m_reduced = choose_parameter(get_parameter(np, internal_np::use_oversegmentation), true);
+    const auto solver = choose_parameter(get_parameter(np, internal_np::solver),
+                                         Default_correlation_clustering_solver());
+    m_solver = [solver](const Correlation_clustering_graph& g, std::vector<std::size_t>& labels) {
+      return solver(g, labels);
+    };
+    m_state.alpha = m_opt.alpha;
+    m_state.alpha_e = internal::edge_alphas(m_data, m_opt, np);
+    m_heavy = std::make_shared<Heavy>();
+    build_oversegmentation_everywhere(*m_heavy);
+    m_state.group.resize(m_heavy->os.number_of_segments);
+    for(std::size_t s = 0; s < m_state.group.size(); ++s) m_state.group[s] = s;
+    solve_all();
+  }
+
+  /// \name Results
+  /// @{
+
+  /// The number of patches.
+  std::size_t number_of_patches() const { return m_state.number_of_patches; }
+  /// The patch of a vertex, in `0 .. number_of_patches()-1` (numbered in vertex order).
+  std::size_t patch(vertex_descriptor v) const { return m_state.labels[m_data.idx.id(v)]; }
+  /// The patch of a face: the majority of its vertices' patches, or the smallest when all
+  /// three differ.
+  std::size_t patch(face_descriptor f) const
+  {
+    const TriangleMesh& tm = m_data.idx.mesh();
+    auto h = halfedge(f, tm);
+    return internal::face_patch_from_vertices(patch(source(h, tm)), patch(target(h, tm)),
+                                              patch(target(next(h, tm), tm)));
+  }
+  /// Writes the patch of every vertex into a `WritablePropertyMap` from `vertex_descriptor`.
+  template <typename VertexPatchMap>
+  void vertex_patches(VertexPatchMap map) const
+  {
+    typedef typename boost::property_traits<VertexPatchMap>::value_type Id;
+    for(std::size_t v = 0; v < m_state.labels.size(); ++v)
+      put(map, m_data.idx.vertex_at(v), static_cast<Id>(m_state.labels[v]));
+  }
+  /// Writes the patch of every face into a `WritablePropertyMap` from `face_descriptor`.
+  template <typename FacePatchMap>
+  void face_patches(FacePatchMap map) const { internal::write_face_patches(m_data.idx, m_state.labels, map); }
+  /// The cut cost (Eq. 1) of the current segmentation under the current weights.
+  double cut_cost() const
+  {
+    double cost = 0;
+    const auto& rg = m_heavy->rg;
+    for(std::size_t e : rg.cross)
+      if(m_state.labels[m_data.edge_vertices[e].first] != m_state.labels[m_data.edge_vertices[e].second])
+        cost += weight(e);
+    return cost;
+  }
+  /// The global parameter alpha.
+  double alpha() const { return m_state.alpha; }
+  /// The parameter `alpha_e` of an edge.
+  double alpha(edge_descriptor e) const { return m_state.alpha_e[m_data.idx.id(e)]; }
+  /// The weight `w(e) = Similarity(e) - alpha_e Award(e)` of an edge.
+  double weight(edge_descriptor e) const { return weight(m_data.idx.id(e)); }
+  /// Whether an edge is a feature edge (from the feature lines, the user or a sketch).
+  bool is_feature_edge(edge_descriptor e) const { return m_data.is_feature_edge[m_data.idx.id(e)] != 0; }
+  /// The feature lines (detected or given), without the sketches.
+  const Feature_lines<TriangleMesh>& feature_lines() const { return m_lines; }
+  /// The number of oversegments (nodes of G').
+  std::size_t number_of_oversegments() const { return m_heavy->os.number_of_segments; }
+  /// The number of edits that `undo()` can take back.
+  std::size_t number_of_undoable_edits() const { return m_undo.size(); }
+  /// @}
+
+  /// \name Edits
+  /// Each returns the new number of patches.
+  /// @{
+
+  /// Global refinement (larger `a`) or coarsening: sets alpha to `a`. The `alpha_e` of
+  /// every feature edge moves by `a - alpha()`, so local edits made before are kept as
+  /// offsets (the authors' tool does the same).
+  std::size_t set_alpha(double a)
+  {
+    if(!std::isfinite(a)) throw Invalid_input("alpha must be a finite number");
+    push_undo();
+    const double shift = a - m_state.alpha;
+    for(std::size_t e = 0; e < m_state.alpha_e.size(); ++e)
+      if(m_data.is_feature_edge[e]) m_state.alpha_e[e] += shift;
+    m_state.alpha = a;
+    solve_all();
+    return number_of_patches();
+  }
+
+  /// Local refinement (`delta > 0`) or coarsening (`delta < 0`): adds `delta` to the
+  /// `alpha_e` of the feature edges of `faces` (a painted region), then re-solves the
+  /// patches that the region touches.
+  /// \tparam FaceRange a range of `face_descriptor`
+  template <typename FaceRange>
+  std::size_t add_to_alpha(const FaceRange& faces, double delta)
+  {
+    if(!std::isfinite(delta)) throw Invalid_input("the alpha increment must be a finite number");
+    return edit_region(faces, [delta](double a) { return a + delta; });
+  }
+
+  /// Local refinement or coarsening by a factor: multiplies the `alpha_e` of the feature
+  /// edges of `faces` by `factor` (>= 0), then re-solves the patches the region touches.
+  template <typename FaceRange>
+  std::size_t multiply_alpha(const FaceRange& faces, double factor)
+  {
+    if(!(factor >= 0) || !std::isfinite(factor)) throw Invalid_input("the alpha factor must be a finite number >= 0");
+    return edit_region(faces, [factor](double a) { return a * factor; });
+  }
+
+  /// Merging: the patches that contain a vertex of `faces` become one patch, and stay
+  /// together in later solves (until undone, or until a sketch redoes their region).
+  template <typename FaceRange>
+  std::size_t merge_patches(const FaceRange& faces)
+  {
+    std::set<std::size_t> touched = patches_of(faces);
+    if(touched.size() < 2) return number_of_patches();
+    push_undo();
+    std::size_t target_group = std::size_t(-1);
+    std::vector<char> in(m_state.group.size(), 0);
+    const auto& seg = m_heavy->os.vertex_segment;
+    for(std::size_t v = 0; v < seg.size(); ++v)
+      if(touched.count(m_state.labels[v]))
+      {
+        in[seg[v]] = 1;
+        target_group = (std::min)(target_group, m_state.group[seg[v]]);
+      }
+    std::vector<char> group_in(m_state.group.size(), 0);
+    for(std::size_t s = 0; s < in.size(); ++s) if(in[s]) group_in[m_state.group[s]] = 1;
+    for(std::size_t s = 0; s < m_state.group.size(); ++s)
+      if(group_in[m_state.group[s]]) m_state.group[s] = target_group;
+    const std::size_t merged = *touched.begin();
+    for(std::size_t& l : m_state.labels) if(touched.count(l)) l = merged;
+    m_state.number_of_patches = normalize_labels(m_state.labels);
+    return number_of_patches();
+  }
+
+  /// Feature sketching: `sketch` is a polyline on the surface. The edges it crosses
+  /// become feature edges with `alpha_e = max(alpha_e, sketch_alpha)`, the weights
+  /// around them are updated, the oversegmentation is recomputed inside the current
+  /// patches that the sketch touches (their merge constraints are released), and those
+  /// patches are re-solved.
+  ///
+  /// The paper uses `alpha_e = 1`; but where the surface is flat, Similarity equals
+  /// Award, so `alpha_e = 1` gives a weight of exactly 0 and nothing asks for the cut (the
+  /// authors' tool raises the Award of sketched edges instead). The default 2 gives
+  /// `w(e) = -Award(e)` on flat ground and more negative weights on features.
+  /// \param sketch the polyline, at least two points
+  /// \param sketch_alpha the `alpha_e` of the crossed edges, finite and > 1
+  /// \return the new number of patches
+  std::size_t add_sketch(const std::vector<Sketch_point>& sketch, double sketch_alpha = 2.0)
+  {
+    if(!(sketch_alpha > 1) || !std::isfinite(sketch_alpha))
+      throw Invalid_input("sketch_alpha must be a finite number > 1 (got " + std::to_string(sketch_alpha) + ")");
+    if(sketch.size() < 2) return number_of_patches();
+    const TriangleMesh& tm = m_data.idx.mesh();
+    std::vector<internal::Sketch_input> in;
+    for(const Sketch_point& sp : sketch)
+    {
+      const auto& p = sp.point;
+      const Eigen::Vector3d q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      if(!q.allFinite()) throw Invalid_input("a sketch point has a NaN or infinite coordinate");
+      in.push_back({m_data.idx.id(sp.face), q});
+    }
+    const std::vector<internal::Sketch_crossing> crossings = internal::walk_sketch(m_data, in);
+    if(crossings.empty()) return number_of_patches();
+    push_undo(true);
+    auto heavy = std::make_shared<Heavy>(*m_heavy);
+    std::vector<std::size_t> faces;
+    std::set<std::size_t> touched;
+    for(const internal::Sketch_crossing& c : crossings)
+    {
+      m_data.point_sum[c.edge] += c.point;
+      ++m_data.point_count[c.edge];
+      m_data.is_feature_edge[c.edge] = 1;
+      m_state.alpha_e[c.edge] = (std::max)(m_state.alpha_e[c.edge], sketch_alpha);
+      auto h = halfedge(m_data.idx.edge_at(c.edge), tm);
+      for(auto hh : {h, opposite(h, tm)})
+        if(!is_border(hh, tm)) faces.push_back(m_data.idx.face_id(hh));
+      touched.insert(m_state.labels[m_data.edge_vertices[c.edge].first]);
+      touched.insert(m_state.labels[m_data.edge_vertices[c.edge].second]);
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    m_data.terms.update_faces(m_data.idx, m_data.vin, m_data.is_feature_edge, m_data.point_sum,
+                              m_data.point_count, faces);
+    m_data.number_of_feature_edges =
+      std::size_t(std::count(m_data.is_feature_edge.begin(), m_data.is_feature_edge.end(), 1));
+    // redo the oversegmentation inside the touched patches
+    std::vector<char> region(m_state.labels.size(), 0);
+    for(std::size_t v = 0; v < region.size(); ++v) region[v] = touched.count(m_state.labels[v]) ? 1 : 0;
+    const internal::Oversegmentation local =
+      m_reduced ? internal::compute_oversegmentation(m_data, m_anisotropic, &region)
+                : singleton_oversegmentation(&region);
+    std::vector<std::size_t> renum(heavy->os.number_of_segments, std::size_t(-1));
+    std::vector<std::size_t> new_group;
+    std::size_t k = 0;
+    for(std::size_t v = 0; v < region.size(); ++v)
+    {
+      if(region[v]) continue;
+      std::size_t& r = renum[heavy->os.vertex_segment[v]];
+      if(r == std::size_t(-1)) { r = k++; new_group.push_back(m_state.group[heavy->os.vertex_segment[v]]); }
+    }
+    // groups outside keep their constraints (ids compacted below); new segments are free
+    const std::size_t first_new = k;
+    for(std::size_t v = 0; v < region.size(); ++v)
+      heavy->os.vertex_segment[v] = region[v] ? first_new + local.vertex_segment[v]
+                                              : renum[heavy->os.vertex_segment[v]];
+    heavy->os.number_of_segments = first_new + local.number_of_segments;
+    std::vector<std::size_t> group_renum(m_state.group.size() + local.number_of_segments, std::size_t(-1));
+    std::size_t ng = 0;
+    for(std::size_t& g : new_group)
+    {
+      if(group_renum[g] == std::size_t(-1)) group_renum[g] = ng++;
+      g = group_renum[g];
+    }
+    for(std::size_t s = 0; s < local.number_of_segments; ++s) new_group.push_back(ng++);
+    m_state.group.swap(new_group);
+    heavy->rg.build(heavy->os.vertex_segment, heavy->os.number_of_segments, m_data.edge_vertices);
+    m_heavy = heavy;
+    solve_patches(touched, /*vertex_region=*/&region);
+    return number_of_patches();
+  }
+
+  /// Takes back the last edit, restoring the labels exactly. Returns `false` when there
+  /// is nothing to undo.
+  bool undo()
+  {
+    if(m_undo.empty()) return false;
+    Undo_record& r = m_undo.back();
+    m_state = std::move(r.state);
+    m_heavy = r.heavy;
+    if(r.features)
+    {
+      m_data.is_feature_edge = std::move(r.features->is_feature_edge);
+      m_data.point_sum = std::move(r.features->point_sum);
+      m_data.point_count = std::move(r.features->point_count);
+      m_data.terms.dual_vertices = std::move(r.features->dual_vertices);
+      m_data.terms.similarity = std::move(r.features->similarity);
+      m_data.terms.award = std::move(r.features->award);
+      m_data.number_of_feature_edges = r.features->number_of_feature_edges;
+    }
+    m_undo.pop_back();
+    return true;
+  }
+  /// @}
+
+private:
+  typedef Eigen::Vector3d Vec3;
+
+  // What a sketch changes besides the light state: shared between the current state and
+  // the undo records that predate no sketch (copy on write).
+  struct Heavy
+  {
+    internal::Oversegmentation os;
+    internal::Reduced_graph rg;
+  };
+  struct State
+  {
+    double alpha = 0.6;
+    std::vector<double> alpha_e;
+    std::vector<std::size_t> group;  // merge constraints: oversegments of a group stay together
+    std::vector<std::size_t> labels; // per vertex
+    std::size_t number_of_patches = 0;
+  };
+  struct Feature_copy
+  {
+    std::vector<char> is_feature_edge;
+    std::vector<Vec3> point_sum;
+    std::vector<int> point_count;
+    std::vector<Vec3> dual_vertices;
+    std::vector<double> similarity, award;
+    std::size_t number_of_feature_edges = 0;
+  };
+  struct Undo_record
+  {
+    State state;
+    std::shared_ptr<Heavy> heavy;
+    std::unique_ptr<Feature_copy> features; // only for a sketch
+  };
+
+  double weight(std::size_t e) const { return m_data.weight(e, m_state.alpha_e[e]); }
+
+  void push_undo(bool with_features = false)
+  {
+    Undo_record r;
+    r.state = m_state;
+    r.heavy = m_heavy;
+    if(with_features)
+    {
+      r.features.reset(new Feature_copy{m_data.is_feature_edge, m_data.point_sum, m_data.point_count,
+                                        m_data.terms.dual_vertices, m_data.terms.similarity,
+                                        m_data.terms.award, m_data.number_of_feature_edges});
+    }
+    m_undo.push_back(std::move(r));
+  }
+
+  internal::Oversegmentation singleton_oversegmentation(const std::vector<char>* region) const
+  {
+    internal::Oversegmentation os;
+    os.vertex_segment.assign(m_data.idx.number_of_vertices(), std::size_t(-1));
+    for(std::size_t v = 0; v < os.vertex_segment.size(); ++v)
+      if(region == nullptr || (*region)[v]) os.vertex_segment[v] = os.number_of_segments++;
+    return os;
+  }
+
+  void build_oversegmentation_everywhere(Heavy& h) const
+  {
+    h.os = m_reduced ? internal::compute_oversegmentation(m_data, m_anisotropic) : singleton_oversegmentation(nullptr);
+    h.rg.build(h.os.vertex_segment, h.os.number_of_segments, m_data.edge_vertices);
+  }
+
+  template <typename FaceRange>
+  std::set<std::size_t> patches_of(const FaceRange& faces) const
+  {
+    const TriangleMesh& tm = m_data.idx.mesh();
+    std::set<std::size_t> touched;
+    for(face_descriptor f : faces)
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+        touched.insert(m_state.labels[m_data.idx.id(target(h, tm))]);
+    return touched;
+  }
+
+  template <typename FaceRange, typename Change>
+  std::size_t edit_region(const FaceRange& faces, Change change)
+  {
+    const TriangleMesh& tm = m_data.idx.mesh();
+    std::set<std::size_t> touched = patches_of(faces);
+    if(touched.empty()) return number_of_patches();
+    push_undo();
+    std::vector<char> done(m_state.alpha_e.size(), 0);
+    for(face_descriptor f : faces)
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      {
+        const std::size_t e = m_data.idx.edge_id(h);
+        if(!m_data.is_feature_edge[e] || done[e]) continue;
+        done[e] = 1;
+        m_state.alpha_e[e] = change(m_state.alpha_e[e]);
+      }
+    solve_patches(touched, nullptr);
+    return number_of_patches();
+  }
+
+  // Clusters the groups of oversegments whose `in_region` is set; the others keep their
+  // labels. Nodes of the solved graph are merge groups (a constraint never cut).
+  void solve(const std::vector<char>* group_in_region)
+  {
+    const Heavy& h = *m_heavy;
+    const std::size_t ngroups = m_state.group.empty() ? 0 : *std::max_element(m_state.group.begin(), m_state.group.end()) + 1;
+    std::vector<std::size_t> node(ngroups, std::size_t(-1));
+    std::size_t n = 0;
+    for(std::size_t g = 0; g < ngroups; ++g)
+      if(group_in_region == nullptr || (*group_in_region)[g]) node[g] = n++;
+    Correlation_clustering_graph graph(n);
+    for(std::size_t i = 0; i < h.rg.edges.size(); ++i)
+    {
+      const std::size_t a = node[m_state.group[h.rg.edges[i].first]], b = node[m_state.group[h.rg.edges[i].second]];
+      if(a == std::size_t(-1) || b == std::size_t(-1) || a == b) continue;
+      double sum = 0;
+      for(std::size_t k = h.rg.cross_begin[i]; k < h.rg.cross_begin[i + 1]; ++k) sum += weight(h.rg.cross[k]);
+      graph.add_edge(a, b, sum);
+    }
+    std::vector<std::size_t> lab;
+    m_solver(graph, lab);
+    CGAL_postcondition(lab.size() == n);
+    const std::size_t offset = m_state.labels.empty() ? 0 : m_state.number_of_patches;
+    m_state.labels.resize(h.os.vertex_segment.size(), 0);
+    for(std::size_t v = 0; v < m_state.labels.size(); ++v)
+    {
+      const std::size_t nd = node[m_state.group[h.os.vertex_segment[v]]];
+      if(nd != std::size_t(-1)) m_state.labels[v] = offset + lab[nd];
+    }
+    m_state.number_of_patches = normalize_labels(m_state.labels);
+  }
+
+  void solve_all()
+  {
+    m_state.labels.clear();
+    solve(nullptr);
+  }
+
+  // Re-solves the patches in `touched` (given by label; or by `vertex_region` after a
+  // sketch, whose segments are new).
+  void solve_patches(const std::set<std::size_t>& touched, const std::vector<char>* vertex_region)
+  {
+    const std::size_t ngroups = *std::max_element(m_state.group.begin(), m_state.group.end()) + 1;
+    std::vector<char> in(ngroups, 0);
+    const auto& seg = m_heavy->os.vertex_segment;
+    for(std::size_t v = 0; v < seg.size(); ++v)
+      if(vertex_region != nullptr ? (*vertex_region)[v] != 0 : touched.count(m_state.labels[v]) != 0)
+        in[m_state.group[seg[v]]] = 1;
+    solve(&in);
+  }
+
+  internal::Segmentation_data<TriangleMesh> m_data;
+  Feature_lines<TriangleMesh> m_lines;
+  internal::Segmentation_options m_opt;
+  bool m_anisotropic = true, m_reduced = true;
+  std::function<std::size_t(const Correlation_clustering_graph&, std::vector<std::size_t>&)> m_solver;
+  State m_state;
+  std::shared_ptr<Heavy> m_heavy;
+  std::vector<Undo_record> m_undo;
+};
+
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_FEATURE_SEGMENTATION_FEATURE_ALIGNED_SEGMENTATION_H

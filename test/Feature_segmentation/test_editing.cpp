@@ -1,0 +1,202 @@
+// The editing class: agreement with the free function, the effect and locality of each
+// edit on fixtures built to show it, and exact undo.
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
+#include "test_meshes.h"
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace FS = CGAL::Feature_segmentation;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> SM;
+typedef FS::Feature_aligned_segmentation<SM> Segmentation;
+
+std::vector<std::size_t> labels(const SM& m, const Segmentation& s)
+{
+  std::vector<std::size_t> l;
+  for(auto v : m.vertices()) l.push_back(s.patch(v));
+  return l;
+}
+
+// Two labellings agree on a vertex subset up to renumbering.
+bool same_partition(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b,
+                    const std::vector<char>& subset)
+{
+  std::map<std::size_t, std::size_t> ab, ba;
+  for(std::size_t i = 0; i < a.size(); ++i)
+  {
+    if(!subset[i]) continue;
+    if(ab.emplace(a[i], b[i]).first->second != b[i]) return false;
+    if(ba.emplace(b[i], a[i]).first->second != a[i]) return false;
+  }
+  return true;
+}
+
+// tube angle of a point of the lobed torus, in [0, 2 pi)
+double tube_angle(const K::Point_3& p, double R)
+{
+  double phi = std::atan2(p.z(), std::hypot(p.x(), p.y()) - R);
+  return phi < 0 ? phi + 2 * M_PI : phi;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(editing)
+
+BOOST_AUTO_TEST_CASE(agrees_with_the_free_function)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::Lobed_torus{}.soup(80, 64));
+  Segmentation seg(m, FS::parameters::alpha(0.6));
+  for(double a : {0.6, 1.0, 0.8})
+  {
+    seg.set_alpha(a);
+    auto vp = m.add_property_map<SM::Vertex_index, std::size_t>("v:p").first;
+    double cost = 0;
+    const std::size_t n = FS::segment_along_features(m, vp, FS::parameters::alpha(a).cut_cost_output(&cost));
+    BOOST_TEST(seg.number_of_patches() == n);
+    for(auto v : m.vertices()) BOOST_TEST(seg.patch(v) == vp[v]);
+    BOOST_TEST(seg.cut_cost() == cost, boost::test_tools::tolerance(1e-9));
+    m.remove_property_map(vp);
+  }
+}
+
+// At alpha 0.6 the torus is cut along its 4 ridge circles only (4 bands). Raising
+// alpha_e around one valley circle cuts that valley too: its band splits (5 patches);
+// the three other bands keep their vertices. Undo restores the labels exactly.
+BOOST_AUTO_TEST_CASE(local_refine_is_local_and_undoable)
+{
+  fs_test::Lobed_torus torus;
+  SM m = fs_test::to_mesh<SM>(torus.soup(80, 64));
+  Segmentation seg(m, FS::parameters::alpha(0.6));
+  BOOST_REQUIRE(seg.number_of_patches() == 4u);
+  const auto before = labels(m, seg);
+  // the region: faces within 0.3 rad of the valley circle at phi = pi/4
+  std::vector<SM::Face_index> region;
+  for(auto f : m.faces())
+  {
+    const auto h = m.halfedge(f);
+    if(std::abs(tube_angle(m.point(m.target(h)), torus.R) - M_PI / 4) < 0.3) region.push_back(f);
+  }
+  const std::size_t n = seg.add_to_alpha(region, 0.6);
+  BOOST_TEST(n == 5u);
+  BOOST_TEST(n >= 4u); // raising alpha_e never reduces the count in the region
+  // vertices away from the edited band (phi outside [0, pi/2]) keep their partition
+  std::vector<char> far(m.number_of_vertices(), 0);
+  std::size_t i = 0;
+  for(auto v : m.vertices()) { const double phi = tube_angle(m.point(v), torus.R); far[i++] = (phi > M_PI / 2 + 0.1 && phi < 2 * M_PI - 0.1); }
+  BOOST_TEST(same_partition(before, labels(m, seg), far));
+  // coarsening back by the same amount gives the 4 bands again
+  BOOST_TEST(seg.add_to_alpha(region, -0.6) == 4u);
+  BOOST_TEST(seg.undo());
+  BOOST_TEST(seg.undo());
+  BOOST_TEST((labels(m, seg) == before));
+  BOOST_TEST(!seg.undo());
+}
+
+BOOST_AUTO_TEST_CASE(global_refine_and_multiply)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::Lobed_torus{}.soup(80, 64));
+  Segmentation seg(m, FS::parameters::alpha(0.4));
+  BOOST_TEST(seg.number_of_patches() == 1u);
+  BOOST_TEST(seg.set_alpha(0.6) == 4u);
+  BOOST_TEST(seg.set_alpha(1.0) == 8u);
+  std::vector<SM::Face_index> all(m.faces().begin(), m.faces().end());
+  BOOST_TEST(seg.multiply_alpha(all, 0.) == 1u); // alpha_e = 0: every weight positive
+  BOOST_TEST(seg.undo());
+  BOOST_TEST(seg.number_of_patches() == 8u);
+  BOOST_CHECK_THROW(seg.set_alpha(std::nan("")), FS::Invalid_input);
+  BOOST_CHECK_THROW(seg.multiply_alpha(all, -1.), FS::Invalid_input);
+}
+
+// Merging the patches a stroke touches gives one patch, kept by later solves.
+BOOST_AUTO_TEST_CASE(merge_reduces_and_persists)
+{
+  fs_test::Lobed_torus torus;
+  SM m = fs_test::to_mesh<SM>(torus.soup(80, 64));
+  Segmentation seg(m, FS::parameters::alpha(1.0));
+  BOOST_REQUIRE(seg.number_of_patches() == 8u);
+  // faces across the ridge circle at phi = pi/2: they touch its two neighbouring bands
+  std::vector<SM::Face_index> stroke;
+  for(auto f : m.faces())
+  {
+    const auto h = m.halfedge(f);
+    if(std::abs(tube_angle(m.point(m.target(h)), torus.R) - M_PI / 2) < 0.15) stroke.push_back(f);
+  }
+  BOOST_TEST(seg.merge_patches(stroke) == 7u);
+  BOOST_TEST(seg.set_alpha(1.2) == 7u); // the merge is a constraint of later solves
+  BOOST_TEST(seg.undo());
+  BOOST_TEST(seg.undo());
+  BOOST_TEST(seg.number_of_patches() == 8u);
+}
+
+// A plane has no feature: one patch. A sketch from border to border across it makes
+// its crossed edges feature edges with alpha_e = 2 (w = -Award on flat ground): two
+// patches, split along the sketch.
+BOOST_AUTO_TEST_CASE(sketch_splits_a_featureless_plane)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::plane(1., 20));
+  Segmentation seg(m, FS::parameters::alpha(0.6));
+  BOOST_REQUIRE(seg.number_of_patches() == 1u);
+  // a vertical stroke at x = 0.03, from y = -1 to y = 1
+  auto face_at = [&](double x, double y) {
+    for(auto f : m.faces())
+    {
+      auto h = m.halfedge(f);
+      K::Triangle_3 t(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
+      if(t.has_on(K::Point_3(x, y, 0))) return f;
+    }
+    return SM::Face_index();
+  };
+  std::vector<Segmentation::Sketch_point> sketch;
+  for(double y : {-0.99, 0., 0.99}) sketch.push_back({face_at(0.03, y), K::Point_3(0.03, y, 0)});
+  const std::size_t n = seg.add_sketch(sketch);
+  BOOST_TEST(n == 2u);
+  std::size_t crossing_features = 0;
+  for(auto e : m.edges())
+  {
+    const auto& p = m.point(m.source(m.halfedge(e)));
+    const auto& q = m.point(m.target(m.halfedge(e)));
+    if(seg.is_feature_edge(e)) { ++crossing_features; BOOST_TEST(seg.alpha(e) == 2.0); BOOST_TEST((p.x() - 0.03) * (q.x() - 0.03) <= 0.); }
+  }
+  BOOST_TEST(crossing_features >= 20u); // at least one per row of the 20x20 grid
+  // the two patches are the two sides of the stroke
+  std::size_t left = std::size_t(-1), right = std::size_t(-1);
+  for(auto v : m.vertices())
+  {
+    const double x = m.point(v).x();
+    if(x < 0.03) { if(left == std::size_t(-1)) left = seg.patch(v); BOOST_TEST(seg.patch(v) == left); }
+    else { if(right == std::size_t(-1)) right = seg.patch(v); BOOST_TEST(seg.patch(v) == right); }
+  }
+  BOOST_TEST(left != right);
+  BOOST_TEST(seg.undo());
+  BOOST_TEST(seg.number_of_patches() == 1u);
+  for(auto e : m.edges()) BOOST_TEST(!seg.is_feature_edge(e));
+  BOOST_CHECK_THROW(seg.add_sketch(sketch, 1.0), FS::Invalid_input);
+}
+
+BOOST_AUTO_TEST_CASE(works_on_polyhedron)
+{
+  typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
+  Poly p = fs_test::to_mesh<Poly>(fs_test::Lobed_torus{}.soup(80, 64));
+  FS::Feature_aligned_segmentation<Poly> seg(p, FS::parameters::alpha(1.0));
+  BOOST_TEST(seg.number_of_patches() == 8u);
+  BOOST_TEST(seg.set_alpha(0.6) == 4u);
+  auto fp = get(CGAL::dynamic_face_property_t<int>(), p);
+  seg.face_patches(fp);
+  for(auto f : faces(p)) BOOST_TEST(std::size_t(get(fp, f)) == seg.patch(f));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
