@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The smoothing of the patch boundaries: block-coordinate descent (Gauss-Seidel) of the
+// boundaries' length in the per-triangle anisotropic metric, over the points of the
+// boundary state, plus moves of single vertices from one patch to the other where that
+// lets a boundary pass on the other side of the vertex. Every change is kept only if the
+// length of the boundary pieces it touches drops, so the energy never rises; a vertex
+// moves only where its ring has exactly two patches, each one contiguous run, so no
+// patch, junction, adjacency or curve appears or disappears.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_BOUNDARY_SMOOTHING_IMPL_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_BOUNDARY_SMOOTHING_IMPL_H
+
+#include <CGAL/Feature_segmentation/internal/boundary_state.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+struct Boundary_smoothing_result
+{
+  std::vector<double> energy, length; // before, then after every iteration
+  std::size_t iterations = 0;
+  std::size_t vertex_moves = 0;
+  bool converged = false;
+};
+
+template <typename TriangleMesh>
+class Boundary_smoother
+{
+public:
+  typedef Boundary_state<TriangleMesh> State;
+  typedef typename State::Vec3 Vec3;
+  static constexpr std::size_t npos = State::npos;
+
+  explicit Boundary_smoother(State& s) : m_s(s) {}
+
+  // `iterations` sweeps at most; stops earlier when a sweep lowers the energy by no more
+  // than `tolerance` times its value.
+  Boundary_smoothing_result run(std::size_t iterations, double tolerance)
+  {
+    Boundary_smoothing_result r;
+    r.energy.push_back(m_s.total_energy(true));
+    r.length.push_back(m_s.total_energy(false));
+    for(std::size_t it = 0; it < iterations; ++it)
+    {
+      for(std::size_t f = 0; f < m_s.number_of_faces(); ++f) update_face(f);
+      for(std::size_t e = 0; e < m_s.number_of_edges(); ++e)
+        if(m_s.is_cut(e)) update_edge(e);
+      for(std::size_t v = 0; v < m_s.number_of_vertices(); ++v)
+        if(try_vertex_move(v)) ++r.vertex_moves;
+      r.energy.push_back(m_s.total_energy(true));
+      r.length.push_back(m_s.total_energy(false));
+      ++r.iterations;
+      const double before = r.energy[r.energy.size() - 2], after = r.energy.back();
+      if(before - after <= tolerance * before)
+      {
+        r.converged = true;
+        break;
+      }
+    }
+    return r;
+  }
+
+  // The point of face f at the minimum of the face's energy: on a through triangle, the
+  // midpoint of its two edge points (any point of that segment is a minimum: the metric
+  // is a norm, constant on the triangle); at a junction, the Fermat-Weber point of its
+  // three edge points in the metric (Weiszfeld's iteration in coordinates where the
+  // metric is Euclidean), kept inside the triangle.
+  bool update_face(std::size_t f)
+  {
+    std::array<std::size_t, 3> c;
+    const int n = m_s.cut_edges(f, c);
+    if(n == 0) return false;
+    Vec3 x;
+    if(n == 2) x = 0.5 * (m_s.edge_point(c[0]) + m_s.edge_point(c[1]));
+    else
+    {
+      const Triangle_metric& m = m_s.metrics[f];
+      if(m.is_degenerate()) return false;
+      const Vec3 origin = m_s.points[m_s.face_vertices[f][0]];
+      const double sq = std::sqrt(m.lambda2);
+      auto to2 = [&](const Vec3& p) {
+        const Eigen::Vector2d w((p - origin).dot(m.u), (p - origin).dot(m.v));
+        return Eigen::Vector2d(w.dot(m.e1), sq * w.dot(m.e2));
+      };
+      std::array<Eigen::Vector2d, 3> q;
+      double scale = 0;
+      for(int i = 0; i < 3; ++i) q[i] = to2(m_s.edge_point(c[i]));
+      for(int i = 0; i < 3; ++i) scale = (std::max)(scale, (q[i] - q[(i + 1) % 3]).norm());
+      if(!(scale > 0)) return false;
+      Eigen::Vector2d y = to2(m_s.face_x[f]);
+      for(int k = 0; k < 200; ++k)
+      {
+        Eigen::Vector2d num = Eigen::Vector2d::Zero();
+        double den = 0;
+        bool at_anchor = false;
+        for(int i = 0; i < 3; ++i)
+        {
+          const double d = (y - q[i]).norm();
+          if(d < 1e-12 * scale) { at_anchor = true; break; }
+          num += q[i] / d;
+          den += 1 / d;
+        }
+        if(at_anchor) break;
+        const Eigen::Vector2d next = num / den;
+        const double step = (next - y).norm();
+        y = next;
+        if(step < 1e-12 * scale) break;
+      }
+      const Eigen::Vector2d w = y[0] * m.e1 + (y[1] / sq) * m.e2;
+      x = m_s.keep_inside(f, origin + w[0] * m.u + w[1] * m.v, State::face_margin);
+    }
+    const Vec3 old = m_s.face_x[f];
+    const double before = m_s.face_energy(f);
+    m_s.face_x[f] = x;
+    if(m_s.face_energy(f) < before) return true;
+    m_s.face_x[f] = old;
+    return false;
+  }
+
+  // The point of cut edge e at the minimum of the length of the boundary in its (one or
+  // two) triangles, with each through triangle's point on the straight segment between
+  // its edge points: a convex function of the edge parameter, minimised by golden section.
+  bool update_edge(std::size_t e)
+  {
+    std::array<std::size_t, 2> faces = m_s.edge_faces[e];
+    std::array<Vec3, 2> target;
+    std::array<bool, 2> through = { false, false };
+    for(int k = 0; k < 2; ++k)
+    {
+      const std::size_t f = faces[k];
+      if(f == npos) continue;
+      std::array<std::size_t, 3> c;
+      const int n = m_s.cut_edges(f, c);
+      CGAL_assertion(n >= 2);
+      if(n == 2) { through[k] = true; target[k] = m_s.edge_point(c[0] == e ? c[1] : c[0]); }
+      else target[k] = m_s.face_x[f];
+    }
+    const double before = local_energy(faces);
+    const double t = State::minimize_convex(State::edge_margin, 1 - State::edge_margin, [&](double s) {
+      const Vec3 p = m_s.edge_point(e, s);
+      double sum = 0;
+      for(int k = 0; k < 2; ++k)
+        if(faces[k] != npos) sum += m_s.metrics[faces[k]].anisotropic(p - target[k]);
+      return sum;
+    });
+    const double old_t = m_s.edge_t[e];
+    const std::array<Vec3, 2> old_x = { faces[0] != npos ? m_s.face_x[faces[0]] : Vec3::Zero(),
+                                        faces[1] != npos ? m_s.face_x[faces[1]] : Vec3::Zero() };
+    m_s.edge_t[e] = t;
+    for(int k = 0; k < 2; ++k)
+      if(through[k]) m_s.face_x[faces[k]] = 0.5 * (m_s.edge_point(e) + target[k]);
+    if(local_energy(faces) < before) return true;
+    m_s.edge_t[e] = old_t;
+    for(int k = 0; k < 2; ++k)
+      if(faces[k] != npos) m_s.face_x[faces[k]] = old_x[k];
+    return false;
+  }
+
+  // Moves vertex v to the other patch of its ring when that shortens the boundary around
+  // it. Allowed only for vertices on the input boundary (`movable`), whose ring holds v's
+  // patch a and one other patch b, as two contiguous runs (one run each along the ring, a
+  // path for a border vertex): then the boundary near v is one piece of one a-b curve,
+  // which the move reroutes to the other side of v; nothing else changes. The new cut
+  // edges' points start at their midpoints and are relaxed (the ring's edges only), and
+  // the move is kept if the length in the triangles around v drops.
+  bool try_vertex_move(std::size_t v)
+  {
+    if(!m_s.movable[v]) return false;
+    const std::size_t b0 = m_s.ring_begin(v), b1 = m_s.ring_end(v);
+    if(b0 == b1) return false;
+    const std::size_t a = m_s.labels[v];
+    std::size_t b = a;
+    for(std::size_t i = b0; i < b1; ++i)
+    {
+      const std::size_t l = m_s.labels[m_s.ring_entries[i][0]];
+      if(l == a) continue;
+      if(b == a) b = l;
+      else if(l != b) return false; // a third patch around v
+    }
+    if(b == a) return false;
+    const bool border = m_s.is_border_vertex(v);
+    std::size_t changes = 0;
+    for(std::size_t i = b0; i + 1 < b1; ++i)
+      if(m_s.labels[m_s.ring_entries[i][0]] != m_s.labels[m_s.ring_entries[i + 1][0]]) ++changes;
+    if(!border && m_s.labels[m_s.ring_entries[b1 - 1][0]] != m_s.labels[m_s.ring_entries[b0][0]]) ++changes;
+    if(changes != (border ? 1u : 2u)) return false;
+
+    std::vector<std::size_t> star;
+    for(std::size_t i = b0; i < b1; ++i)
+      if(m_s.ring_entries[i][2] != npos) star.push_back(m_s.ring_entries[i][2]);
+    double before = 0;
+    for(std::size_t f : star) before += m_s.face_energy(f);
+    std::vector<double> old_t;
+    for(std::size_t i = b0; i < b1; ++i) old_t.push_back(m_s.edge_t[m_s.ring_entries[i][1]]);
+    std::vector<Vec3> old_x;
+    for(std::size_t f : star) old_x.push_back(m_s.face_x[f]);
+
+    m_s.labels[v] = b;
+    for(std::size_t i = b0; i < b1; ++i)
+      if(m_s.is_cut(m_s.ring_entries[i][1])) m_s.edge_t[m_s.ring_entries[i][1]] = 0.5;
+    for(std::size_t f : star)
+    {
+      std::array<std::size_t, 3> c;
+      if(m_s.cut_edges(f, c) == 2) m_s.face_x[f] = 0.5 * (m_s.edge_point(c[0]) + m_s.edge_point(c[1]));
+    }
+    for(int sweep = 0; sweep < 8; ++sweep)
+      for(std::size_t i = b0; i < b1; ++i)
+        if(m_s.is_cut(m_s.ring_entries[i][1])) update_edge(m_s.ring_entries[i][1]);
+    double after = 0;
+    for(std::size_t f : star) after += m_s.face_energy(f);
+    // a relative margin: a move that gains only rounding noise is not worth a topology change
+    if(after < before * (1 - 1e-9)) return true;
+    m_s.labels[v] = a;
+    for(std::size_t i = b0; i < b1; ++i) m_s.edge_t[m_s.ring_entries[i][1]] = old_t[i - b0];
+    for(std::size_t k = 0; k < star.size(); ++k) m_s.face_x[star[k]] = old_x[k];
+    return false;
+  }
+
+private:
+  double local_energy(const std::array<std::size_t, 2>& faces) const
+  {
+    double s = 0;
+    for(std::size_t f : faces) if(f != npos) s += m_s.face_energy(f);
+    return s;
+  }
+
+  State& m_s;
+};
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_BOUNDARY_SMOOTHING_IMPL_H
