@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# The quality evaluation in one command (issue 6): installs what it needs, builds the
+# evaluation program and the contact-sheet renderer, evaluates fandisk, the paper's
+# models and the ground-truth models (ABC format), and writes
+#   OUT/table.md, OUT/table.csv, OUT/robustness.csv   the tables
+#   OUT/contact_sheets/MODEL.png                       feature lines and every method's patches
+#   OUT/tiles/, OUT/scenes/                            the pictures' parts and the renderer's input
+# Usage: scripts/run_evaluation.sh [OUT]   (default: out/evaluation)
+# Environment: FEATURE_SEGMENTATION_DATA (default: ../shared/data beside the clone, if
+# present; without it only fandisk is evaluated), FS_BUILD_DIR (default: <source>/build),
+# FS_TILE_SIZE (default 300 pixels per view).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+out="${1:-out/evaluation}"
+build="${FS_BUILD_DIR:-$here/build}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+tile="${FS_TILE_SIZE:-300}"
+
+"$here/scripts/install_dependencies.sh"
+# The renderer's extras (Mesa's off-screen OpenGL, libpng, ImageMagick's montage, a font).
+extras=(libosmesa6-dev libpng-dev pkg-config imagemagick fonts-dejavu-core)
+missing=()
+for p in "${extras[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "run_evaluation: installing ${missing[*]}"
+  SUDO=""; if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --target evaluate_quality -j "$jobs"
+cmake -S "$here/benchmark/Feature_segmentation/evaluation" -B "$build/evaluation-render" >/dev/null
+cmake --build "$build/evaluation-render" -j "$jobs"
+
+data="${FEATURE_SEGMENTATION_DATA:-}"
+if [ -z "$data" ] && [ -d "$here/../shared/data" ]; then data="$(cd "$here/../shared/data" && pwd)"; fi
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+if [ -n "$data" ]; then
+  "$build/benchmark/Feature_segmentation/evaluate_quality" --data "$data" --out "$out"
+else
+  echo "run_evaluation: no data folder (FEATURE_SEGMENTATION_DATA unset, no ../shared/data): fandisk only"
+  "$build/benchmark/Feature_segmentation/evaluate_quality" --out "$out"
+fi
+
+font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+rm -rf "$out/tiles" "$out/contact_sheets"
+mkdir -p "$out/tiles" "$out/contact_sheets"
+for scene in "$out"/scenes/*.scene; do
+  model="$(basename "$scene" .scene)"
+  args=()
+  while IFS=$'\t' read -r png label; do
+    args+=(-label "$label" "$png")
+  done < <("$build/evaluation-render/render_scenes" "$scene" "$out/tiles/$model" "$tile")
+  montage -font "$font" -pointsize 13 "${args[@]}" -tile 3x -geometry +6+6 \
+          -title "$model" "$out/contact_sheets/$model.png"
+  echo "run_evaluation: $out/contact_sheets/$model.png"
+done
+
+echo
+echo "Tables: $out/table.md, $out/table.csv, $out/robustness.csv"
+echo "Contact sheets: $out/contact_sheets/"
