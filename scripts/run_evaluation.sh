@@ -4,7 +4,8 @@
 # models and the ground-truth models (ABC format), and writes
 #   OUT/table.md, OUT/table.csv, OUT/robustness.csv   the tables
 #   OUT/contact_sheets/MODEL.png                       feature lines and every method's patches
-#   OUT/tiles/, OUT/scenes/                            the pictures' parts and the renderer's input
+#   OUT/tiles/                                         the pictures' parts (OUT/scenes/, the renderer's
+#                                                      input, is kept with FS_KEEP_SCENES=1)
 # Usage: scripts/run_evaluation.sh [OUT]   (default: out/evaluation)
 # Environment: FEATURE_SEGMENTATION_DATA (default: ../shared/data beside the clone, if
 # present; without it only fandisk is evaluated), FS_BUILD_DIR (default: <source>/build),
@@ -59,6 +60,9 @@ for scene in "$out"/scenes/*.scene; do
           -title "$model" "$out/contact_sheets/$model.png"
   echo "run_evaluation: $out/contact_sheets/$model.png"
 done
+
+# The scenes (about 4 MB per model) only feed the renderer.
+if [ "${FS_KEEP_SCENES:-0}" != 1 ]; then rm -rf "$out/scenes"; fi
 
 echo
 echo "Tables: $out/table.md, $out/table.csv, $out/robustness.csv"
