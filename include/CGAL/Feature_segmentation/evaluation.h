@@ -51,6 +51,7 @@ constexpr double default_significant_overlap = 0.1;
 
 /// \ingroup PkgFeatureSegmentationEvaluation
 /// The length of the diagonal of the bounding box of `tm`'s vertices.
+/// \param tm the mesh (a model of `VertexListGraph`)
 /// \param np optional named parameters: `vertex_point_map`
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double bounding_box_diagonal(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
@@ -78,6 +79,8 @@ double bounding_box_diagonal(const TriangleMesh& tm, const NamedParameters& np =
 /// \ingroup PkgFeatureSegmentationEvaluation
 /// The default boundary tolerance of `tm`: `default_relative_boundary_tolerance` times
 /// `bounding_box_diagonal()`.
+/// \param tm the mesh
+/// \param np optional named parameters: `vertex_point_map`
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double default_boundary_tolerance(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -87,6 +90,8 @@ double default_boundary_tolerance(const TriangleMesh& tm, const NamedParameters&
 /// \ingroup PkgFeatureSegmentationEvaluation
 /// The number of distinct patch ids among the faces of `tm`.
 /// \tparam FacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
+/// \param tm the mesh (a model of `FaceListGraph`)
+/// \param face_patch the patch of every face
 template <typename TriangleMesh, typename FacePatchMap>
 std::size_t number_of_patches(const TriangleMesh& tm, FacePatchMap face_patch)
 {
@@ -103,6 +108,9 @@ std::size_t number_of_patches(const TriangleMesh& tm, FacePatchMap face_patch)
 /// clustering minimises.
 /// \tparam VertexPatchMap a `ReadablePropertyMap` from `vertex_descriptor` to an integer type
 /// \tparam EdgeWeightMap a `ReadablePropertyMap` from `edge_descriptor` to a floating-point type
+/// \param tm the mesh (a model of `EdgeListGraph`)
+/// \param vertex_patch the patch of every vertex
+/// \param weight the weight `w(e)` of every edge
 template <typename TriangleMesh, typename VertexPatchMap, typename EdgeWeightMap>
 double cut_cost(const TriangleMesh& tm, VertexPatchMap vertex_patch, EdgeWeightMap weight)
 {
@@ -122,6 +130,10 @@ double cut_cost(const TriangleMesh& tm, VertexPatchMap vertex_patch, EdgeWeightM
 /// faces, the smallest id on a tie. An isolated vertex gets `isolated_id`.
 /// \tparam FacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
 /// \tparam VertexPatchMap a `WritablePropertyMap` from `vertex_descriptor` to the same type
+/// \param tm the mesh (a model of `FaceListGraph`)
+/// \param face_patch the patch of every face
+/// \param vertex_patch the output
+/// \param isolated_id the patch of a vertex without incident face
 template <typename TriangleMesh, typename FacePatchMap, typename VertexPatchMap>
 void vertex_patches_from_face_patches(const TriangleMesh& tm, FacePatchMap face_patch, VertexPatchMap vertex_patch,
                                       typename boost::property_traits<FacePatchMap>::value_type isolated_id = 0)
@@ -164,6 +176,9 @@ struct Boundary_scores
 ///
 /// \tparam FacePatchMap, ReferenceFacePatchMap `ReadablePropertyMap`s from
 ///         `face_descriptor` to integer types
+/// \param tm the mesh (a model of `FaceListGraph`)
+/// \param face_patch the patch of every face: the segmentation scored
+/// \param reference_face_patch the patch of every face in the reference (the ground truth)
 /// \param tolerance the distance tolerance, in the mesh's units, for example
 ///        `default_boundary_tolerance(tm)` (1% of the bounding-box diagonal)
 /// \param np optional named parameters: `vertex_point_map`
@@ -249,6 +264,10 @@ struct Partition_scores
 /// significant piece, minus one (one patch spanning three reference patches counts 2).
 /// Both are 0 for identical partitions; a single patch against `n` reference patches
 /// gives `under_segmentation == n - 1`.
+/// \param labels the label of every element: the segmentation scored
+/// \param reference the reference label of every element (the ground truth)
+/// \param weights the weight of every element (for faces: their areas)
+/// \param significant_overlap the share of a reference patch's weight that makes a piece significant
 /// \pre the three vectors have the same size; `0 < significant_overlap <= 1`
 template <typename Label, typename ReferenceLabel>
 Partition_scores compare_partitions(const std::vector<Label>& labels, const std::vector<ReferenceLabel>& reference,
@@ -284,6 +303,10 @@ Partition_scores compare_partitions(const std::vector<Label>& labels, const std:
 /// overload of `compare_partitions()`.
 /// \tparam FacePatchMap, ReferenceFacePatchMap `ReadablePropertyMap`s from
 ///         `face_descriptor` to integer types
+/// \param tm the mesh (a model of `FaceListGraph`)
+/// \param face_patch the patch of every face: the segmentation scored
+/// \param reference_face_patch the patch of every face in the reference (the ground truth)
+/// \param significant_overlap the share of a reference patch's area that makes a piece significant
 /// \param np optional named parameters: `vertex_point_map`
 template <typename TriangleMesh, typename FacePatchMap, typename ReferenceFacePatchMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -336,6 +359,9 @@ struct Feature_line_scores
 /// line is not invented), that is, boundary that no feature supports.
 ///
 /// \tparam FacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
+/// \param tm the mesh (a model of `FaceListGraph`)
+/// \param face_patch the patch of every face
+/// \param lines the feature lines of `tm`
 /// \param tolerance the distance tolerance, for example `default_boundary_tolerance(tm)`
 /// \param strong_strength the strength from which a line is strong
 /// \param np optional named parameters: `vertex_point_map`
