@@ -50,9 +50,12 @@ public:
     r.length.push_back(m_s.total_energy(false));
     for(std::size_t it = 0; it < iterations; ++it)
     {
+      const std::vector<double> t0 = m_s.edge_t;
+      const std::vector<Vec3> x0 = m_s.face_x;
       for(std::size_t f = 0; f < m_s.number_of_faces(); ++f) update_face(f);
       for(std::size_t e = 0; e < m_s.number_of_edges(); ++e)
         if(m_s.is_cut(e)) update_edge(e);
+      extrapolate(t0, x0);
       for(std::size_t v = 0; v < m_s.number_of_vertices(); ++v)
         if(try_vertex_move(v)) ++r.vertex_moves;
       r.energy.push_back(m_s.total_energy(true));
@@ -222,6 +225,40 @@ public:
     for(std::size_t i = b0; i < b1; ++i) m_s.edge_t[m_s.ring_entries[i][1]] = old_t[i - b0];
     for(std::size_t k = 0; k < star.size(); ++k) m_s.face_x[star[k]] = old_x[k];
     return false;
+  }
+
+  // Coordinate descent moves a whole curve slowly (each point alone sees a small gain,
+  // e.g. to shift a boundary onto a nearby crease); so, after a sweep, the sweep's
+  // displacement is extrapolated by factors 2, 4, ... 64, points kept in their domains,
+  // and the best of these states is kept if it has a lower energy.
+  void extrapolate(const std::vector<double>& t0, const std::vector<Vec3>& x0)
+  {
+    const std::vector<double> t1 = m_s.edge_t;
+    const std::vector<Vec3> x1 = m_s.face_x;
+    double best = m_s.total_energy(true), best_factor = 1;
+    auto apply = [&](double factor) {
+      for(std::size_t e = 0; e < m_s.number_of_edges(); ++e)
+        if(m_s.is_cut(e))
+          m_s.edge_t[e] = (std::min)(1 - State::edge_margin,
+                                     (std::max)(State::edge_margin, t0[e] + factor * (t1[e] - t0[e])));
+      for(std::size_t f = 0; f < m_s.number_of_faces(); ++f)
+      {
+        std::array<std::size_t, 3> c;
+        const int n = m_s.cut_edges(f, c);
+        if(n == 2) m_s.face_x[f] = 0.5 * (m_s.edge_point(c[0]) + m_s.edge_point(c[1]));
+        else if(n == 3)
+          m_s.face_x[f] = m_s.keep_inside(f, x0[f] + factor * (x1[f] - x0[f]), State::face_margin);
+      }
+    };
+    for(double factor = 2; factor <= 64; factor *= 2)
+    {
+      apply(factor);
+      const double energy = m_s.total_energy(true);
+      if(energy < best) { best = energy; best_factor = factor; }
+      else break; // the energy along the ray is convex: past its minimum
+    }
+    if(best_factor > 1) apply(best_factor);
+    else { m_s.edge_t = t1; m_s.face_x = x1; }
   }
 
 private:
