@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+#include <CGAL/Feature_segmentation/segment_along_features.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

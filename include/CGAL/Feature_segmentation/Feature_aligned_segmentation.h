@@ -11,7 +11,9 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Feature_segmentation/parameters.h>
-#include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/Solver_sequence.h>
+#include <CGAL/Feature_segmentation/Watershed_distance.h>
+#include <CGAL/Feature_segmentation/internal/face_patch_rule.h>
 #include <CGAL/Feature_segmentation/internal/oversegmentation_impl.h>
 #include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
 #include <CGAL/Feature_segmentation/internal/sketch_walk.h>

@@ -9,53 +9,12 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Feature_segmentation/parameters.h>
-#include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
-#include <CGAL/Feature_segmentation/Solver_sequence.h>
-#include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
-#include <CGAL/Feature_segmentation/internal/oversegmentation_impl.h>
+#include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
 
-#include <algorithm>
-#include <array>
 #include <cstddef>
-#include <vector>
 
 namespace CGAL {
 namespace Feature_segmentation {
-/// \ingroup PkgFeatureSegmentationSegmentation
-/// The distance whose watershed makes the oversegmentation (paper, Section 3.3).
-enum class Watershed_distance
-{
-  ANISOTROPIC, ///< dual edges of length Similarity(e): the paper's choice, the default
-  GEODESIC     ///< dual edges of Euclidean length Award(e), as Mitani-Suzuki and Levy et al.
-};
-
-namespace internal {
-
-// The patch of a face from its vertices' patches: the majority; when the three differ,
-// the smallest id.
-inline std::size_t face_patch_from_vertices(std::size_t a, std::size_t b, std::size_t c)
-{
-  if(a == b || a == c) return a;
-  if(b == c) return b;
-  return (std::min)(a, (std::min)(b, c));
-}
-
-template <typename TriangleMesh, typename FacePatchMap>
-void write_face_patches(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std::size_t>& labels,
-                        FacePatchMap face_patch)
-{
-  const TriangleMesh& tm = idx.mesh();
-  typedef typename boost::property_traits<FacePatchMap>::value_type Id;
-  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
-  {
-    auto h = halfedge(idx.face_at(f), tm);
-    put(face_patch, idx.face_at(f),
-        static_cast<Id>(face_patch_from_vertices(labels[idx.id(source(h, tm))], labels[idx.id(target(h, tm))],
-                                                 labels[idx.id(target(next(h, tm), tm))])));
-  }
-}
-
-} // namespace internal
 
 /// \ingroup PkgFeatureSegmentationSegmentation
 /// Segments `tm` into patches whose boundaries follow its salient ridges and valleys:
@@ -109,58 +68,19 @@ template <typename TriangleMesh, typename VertexPatchMap,
 std::size_t segment_along_features(const TriangleMesh& tm, VertexPatchMap vertex_patch_map,
                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
-  const internal::Segmentation_options opt = internal::read_segmentation_options<TriangleMesh>(np);
-  internal::Segmentation_data<TriangleMesh> data(tm);
-  Feature_lines<TriangleMesh> lines;
-  internal::prepare_segmentation_data(tm, np, opt, data, lines);
-
-  const std::vector<double> alpha_e = internal::edge_alphas(data, opt, np);
-  const auto solver = choose_parameter(get_parameter(np, internal_np::solver),
-                                       Default_correlation_clustering_solver());
-  const bool reduced = choose_parameter(get_parameter(np, internal_np::use_oversegmentation), true);
-  const Watershed_distance distance = choose_parameter(get_parameter(np, internal_np::watershed_distance),
-                                                       Watershed_distance::ANISOTROPIC);
-  std::vector<std::size_t> labels;
-  if(reduced)
-  {
-    const internal::Oversegmentation os =
-      internal::compute_oversegmentation(data, distance == Watershed_distance::ANISOTROPIC);
-    internal::Reduced_graph rg;
-    rg.build(os.vertex_segment, os.number_of_segments, data.edge_vertices);
-    const Correlation_clustering_graph gr = rg.graph([&](std::size_t e) { return data.weight(e, alpha_e[e]); });
-    std::vector<std::size_t> segment_labels;
-    solver(gr, segment_labels);
-    CGAL_postcondition(segment_labels.size() == gr.number_of_nodes());
-    labels.resize(os.vertex_segment.size());
-    for(std::size_t v = 0; v < labels.size(); ++v) labels[v] = segment_labels[os.vertex_segment[v]];
-  }
-  else
-  {
-    solver(data.graph(alpha_e), labels);
-    CGAL_postcondition(labels.size() == data.idx.number_of_vertices());
-  }
-  const std::size_t n = normalize_labels(labels);
-
-  typedef typename boost::property_traits<VertexPatchMap>::value_type Id;
-  for(std::size_t v = 0; v < labels.size(); ++v)
-    put(vertex_patch_map, data.idx.vertex_at(v), static_cast<Id>(labels[v]));
+  // one shot of the editing class: same precomputation, same defaults, same solve
+  const Feature_aligned_segmentation<TriangleMesh> seg(tm, np);
+  seg.vertex_patches(vertex_patch_map);
   if constexpr(!is_default_parameter<NamedParameters, CGAL::internal_np::face_patch_t>::value)
-    internal::write_face_patches(data.idx, labels, get_parameter(np, CGAL::internal_np::face_patch));
+    seg.face_patches(get_parameter(np, CGAL::internal_np::face_patch));
   if constexpr(!is_default_parameter<NamedParameters, internal_np::cut_cost_output_t>::value)
   {
     double* out = get_parameter(np, internal_np::cut_cost_output);
-    if(out != nullptr)
-    {
-      double cost = 0; // on the mesh's edges (equal to G''s cut cost: inner edges are never cut)
-      for(std::size_t e = 0; e < data.edge_vertices.size(); ++e)
-        if(labels[data.edge_vertices[e].first] != labels[data.edge_vertices[e].second])
-          cost += data.weight(e, alpha_e[e]);
-      *out = cost;
-    }
+    if(out != nullptr) *out = seg.cut_cost();
   }
+  const std::size_t n = seg.number_of_patches();
   return n;
 }
 
