@@ -29,9 +29,16 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
+
 namespace FS = CGAL::Feature_segmentation;
 
 namespace {
+
+using fs_bench::cpu_name;
+using fs_bench::fastest;
+using fs_bench::refine_to_faces;
+using fs_bench::seconds_since;
 
 struct Options
 {
@@ -122,19 +129,6 @@ FS::Correlation_clustering_graph grid_graph(std::size_t width, std::size_t heigh
   return g;
 }
 
-std::string cpu_name()
-{
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while(std::getline(cpuinfo, line))
-    if(line.compare(0, 10, "model name") == 0)
-    {
-      const std::size_t colon = line.find(':');
-      if(colon != std::string::npos && colon + 2 <= line.size())
-        return line.substr(colon + 2);
-    }
-  return "unknown";
-}
 
 // Runs `solve` on a fresh copy of `initial` `repeat` times; returns the timings sorted
 // and leaves the labels of the last run in `labels`.

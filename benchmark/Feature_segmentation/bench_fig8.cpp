@@ -71,6 +71,8 @@
 #include <thread>
 #include <vector>
 
+#include "bench_common.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef boost::graph_traits<Mesh>::edge_descriptor edge_descriptor;
@@ -81,6 +83,11 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fsys = std::filesystem;
 
 namespace {
+
+using fs_bench::cpu_name;
+using fs_bench::fastest;
+using fs_bench::refine_to_faces;
+using fs_bench::seconds_since;
 
 struct Options
 {
@@ -132,39 +139,8 @@ struct Row
   }
 };
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
-// Runs `f` `repeat` times and returns the fastest wall-clock time; the shortest run is
-// the one least disturbed by the rest of the machine.
-template <typename F>
-double fastest(std::size_t repeat, F f)
-{
-  double best = 1e300;
-  for(std::size_t r = 0; r < repeat; ++r)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    best = (std::min)(best, seconds_since(start));
-  }
-  return best;
-}
 
-std::string cpu_name()
-{
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while(std::getline(cpuinfo, line))
-    if(line.compare(0, 10, "model name") == 0)
-    {
-      const std::size_t colon = line.find(':');
-      if(colon != std::string::npos && colon + 2 <= line.size())
-        return line.substr(colon + 2);
-    }
-  return "unknown";
-}
 
 // The 1-minute load average: the times are wall-clock times, so a busy machine (other
 // processes on the same cores) shows in them; the output says how busy it was.
@@ -211,45 +187,7 @@ bool read_mesh(const std::string& path, Mesh& mesh, std::string& error)
   return true;
 }
 
-// Remeshes `mesh` isotropically with target edge length L, its sharp edges (dihedral
-// angle above 60 degrees) kept as constraints: the CAD features the segmentation is
-// about survive the refinement. Same procedure as bench_segmentation.
-void remesh(Mesh& mesh, double L)
-{
-  auto is_sharp = mesh.add_property_map<edge_descriptor, bool>("e:is_sharp", false).first;
-  PMP::detect_sharp_edges(mesh, 60, is_sharp);
-  // Protected constraints are neither split nor collapsed by the remeshing, and CGAL
-  // warns that constraints much longer than L stall it: split them to L first.
-  std::vector<edge_descriptor> sharp;
-  for(edge_descriptor e : edges(mesh))
-    if(get(is_sharp, e)) sharp.push_back(e);
-  PMP::split_long_edges(sharp, L, mesh, CGAL::parameters::edge_is_constrained_map(is_sharp));
-  PMP::isotropic_remeshing(faces(mesh), L, mesh,
-                           CGAL::parameters::number_of_iterations(3)
-                                            .edge_is_constrained_map(is_sharp)
-                                            .protect_constraints(true));
-  mesh.remove_property_map(is_sharp);
-  mesh.collect_garbage();
-}
 
-// Remeshes `mesh` to about `target_faces` faces.
-void refine(Mesh& mesh, std::size_t target_faces)
-{
-  // An equilateral triangle of side L has area sqrt(3)/4 L^2.
-  double L = std::sqrt(4. * PMP::area(mesh) / (std::sqrt(3.) * double(target_faces)));
-  const Mesh original = mesh;
-  remesh(mesh, L);
-  // The remesher keeps edges between 4/5 L and 4/3 L, not at L, so the count from the
-  // area misses the target by some 25%; one correction from the measured count, on the
-  // original mesh, lands within a few percent.
-  const double ratio = double(num_faces(mesh)) / double(target_faces);
-  if(std::abs(ratio - 1) > 0.05)
-  {
-    L *= std::sqrt(ratio);
-    mesh = original;
-    remesh(mesh, L);
-  }
-}
 
 std::string format(const char* f, double x)
 {
@@ -499,7 +437,7 @@ int main(int argc, char** argv)
     }
     const std::size_t original_faces = num_faces(mesh);
     const auto start = std::chrono::steady_clock::now();
-    refine(mesh, options.target_faces);
+    refine_to_faces(mesh, options.target_faces);
     mesh_name = fsys::path(base).stem().string() + " remeshed (isotropic, sharp edges kept, from " +
                 std::to_string(original_faces) + " faces)";
     std::cout << "Remeshed " << base << " in " << format("%.1f", seconds_since(start)) << " s\n";

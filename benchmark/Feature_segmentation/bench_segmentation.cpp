@@ -44,6 +44,8 @@
 #include <thread>
 #include <vector>
 
+#include "bench_common.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
@@ -54,6 +56,11 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fsys = std::filesystem;
 
 namespace {
+
+using fs_bench::cpu_name;
+using fs_bench::fastest;
+using fs_bench::refine_to_faces;
+using fs_bench::seconds_since;
 
 struct Options
 {
@@ -74,39 +81,8 @@ struct Row
   std::string status = "ok";
 };
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
-// Runs `f` `repeat` times and returns the fastest wall-clock time; the shortest run is
-// the one least disturbed by the rest of the machine.
-template <typename F>
-double fastest(std::size_t repeat, F f)
-{
-  double best = 1e300;
-  for(std::size_t r = 0; r < repeat; ++r)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    best = (std::min)(best, seconds_since(start));
-  }
-  return best;
-}
 
-std::string cpu_name()
-{
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while(std::getline(cpuinfo, line))
-    if(line.compare(0, 10, "model name") == 0)
-    {
-      const std::size_t colon = line.find(':');
-      if(colon != std::string::npos && colon + 2 <= line.size())
-        return line.substr(colon + 2);
-    }
-  return "unknown";
-}
 
 bool parse_options(int argc, char** argv, Options& options)
 {
@@ -199,44 +175,7 @@ void run(const Mesh& mesh, const Options& options, Row& row)
   });
 }
 
-// Remeshes `mesh` isotropically with target edge length L, its sharp edges (dihedral
-// angle above 60 degrees) kept as constraints.
-void remesh(Mesh& mesh, double L)
-{
-  auto is_sharp = mesh.add_property_map<edge_descriptor, bool>("e:is_sharp", false).first;
-  PMP::detect_sharp_edges(mesh, 60, is_sharp);
-  // Protected constraints are neither split nor collapsed by the remeshing, and CGAL
-  // warns that constraints much longer than L stall it: split them to L first.
-  std::vector<edge_descriptor> sharp;
-  for(edge_descriptor e : edges(mesh))
-    if(get(is_sharp, e)) sharp.push_back(e);
-  PMP::split_long_edges(sharp, L, mesh, CGAL::parameters::edge_is_constrained_map(is_sharp));
-  PMP::isotropic_remeshing(faces(mesh), L, mesh,
-                           CGAL::parameters::number_of_iterations(3)
-                                            .edge_is_constrained_map(is_sharp)
-                                            .protect_constraints(true));
-  mesh.remove_property_map(is_sharp);
-  mesh.collect_garbage();
-}
 
-// Remeshes `mesh` to about `target_faces` faces, a large CAD-like input.
-void refine(Mesh& mesh, std::size_t target_faces)
-{
-  // An equilateral triangle of side L has area sqrt(3)/4 L^2.
-  double L = std::sqrt(4. * PMP::area(mesh) / (std::sqrt(3.) * double(target_faces)));
-  const Mesh original = mesh;
-  remesh(mesh, L);
-  // The remesher keeps edges between 4/5 L and 4/3 L, not at L, so the count from the
-  // area misses the target by some 25%; one correction from the measured count, on the
-  // original mesh, lands within a few percent.
-  const double ratio = double(num_faces(mesh)) / double(target_faces);
-  if(std::abs(ratio - 1) > 0.05)
-  {
-    L *= std::sqrt(ratio);
-    mesh = original;
-    remesh(mesh, L);
-  }
-}
 
 std::string format_seconds(double s)
 {
@@ -379,7 +318,7 @@ int main(int argc, char** argv)
     else
     {
       const auto start = std::chrono::steady_clock::now();
-      refine(mesh, options.target_faces);
+      refine_to_faces(mesh, options.target_faces);
       std::cerr << "bench_segmentation: remeshed " << base << " to " << num_faces(mesh) << " faces in "
                 << format_seconds(seconds_since(start)) << " s" << std::endl;
       measure(base + "_remeshed", "generated", mesh);
