@@ -38,6 +38,8 @@ public:
   typedef Boundary_state<TriangleMesh> State;
   typedef typename State::Vec3 Vec3;
   static constexpr std::size_t npos = State::npos;
+  // a boundary point this close to a vertex (in edge parameter) presses against it
+  static constexpr double pressed_distance = 0.1;
 
   explicit Boundary_smoother(State& s) : m_s(s) {}
 
@@ -168,12 +170,12 @@ public:
   }
 
   // Moves vertex v to the other patch of its ring when that shortens the boundary around
-  // it. Allowed only for vertices on the input boundary (`movable`), whose ring holds v's
+  // it. Tried only where a boundary point lies within a tenth of its edge from v. Allowed only for vertices on the input boundary (`movable`), whose ring holds v's
   // patch a and one other patch b, as two contiguous runs (one run each along the ring, a
   // path for a border vertex): then the boundary near v is one piece of one a-b curve,
   // which the move reroutes to the other side of v; nothing else changes. The new cut
-  // edges' points start at their midpoints and are relaxed (the ring's edges only), and
-  // the move is kept if the length in the triangles around v drops.
+  // edges' points start at their midpoints and are relaxed (the ring's edges only, four
+  // sweeps), and the move is kept if the length in the triangles around v drops.
   bool try_vertex_move(std::size_t v)
   {
     if(!m_s.movable[v]) return false;
@@ -195,6 +197,18 @@ public:
       if(m_s.labels[m_s.ring_entries[i][0]] != m_s.labels[m_s.ring_entries[i + 1][0]]) ++changes;
     if(!border && m_s.labels[m_s.ring_entries[b1 - 1][0]] != m_s.labels[m_s.ring_entries[b0][0]]) ++changes;
     if(changes != (border ? 1u : 2u)) return false;
+    // Only where the boundary presses against v: a move sends the boundary across v, and
+    // is worth trying only if some boundary point next to v is already near it (a point
+    // away from v would lengthen the boundary by going around v on the other side).
+    bool pressed = false;
+    for(std::size_t i = b0; i < b1 && !pressed; ++i)
+    {
+      const std::size_t e = m_s.ring_entries[i][1];
+      if(!m_s.is_cut(e)) continue;
+      const double from_v = (m_s.edge_vertices[e][0] == v) ? m_s.edge_t[e] : 1 - m_s.edge_t[e];
+      pressed = from_v <= pressed_distance;
+    }
+    if(!pressed) return false;
 
     std::vector<std::size_t> star;
     for(std::size_t i = b0; i < b1; ++i)
@@ -214,7 +228,7 @@ public:
       std::array<std::size_t, 3> c;
       if(m_s.cut_edges(f, c) == 2) m_s.face_x[f] = 0.5 * (m_s.edge_point(c[0]) + m_s.edge_point(c[1]));
     }
-    for(int sweep = 0; sweep < 8; ++sweep)
+    for(int sweep = 0; sweep < 4; ++sweep)
       for(std::size_t i = b0; i < b1; ++i)
         if(m_s.is_cut(m_s.ring_entries[i][1])) update_edge(m_s.ring_entries[i][1]);
     double after = 0;

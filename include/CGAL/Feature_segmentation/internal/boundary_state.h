@@ -147,7 +147,7 @@ public:
   }
 
   // Golden-section search for the minimum of a convex function on [lo, hi] (deterministic;
-  // 48 steps shrink the interval below 1e-9 of its length).
+  // 36 steps shrink the interval below 3e-8 of its length).
   template <typename F>
   static double minimize_convex(double lo, double hi, F fn)
   {
@@ -155,7 +155,7 @@ public:
     double a = lo, b = hi;
     double x1 = b - r * (b - a), x2 = a + r * (b - a);
     double f1 = fn(x1), f2 = fn(x2);
-    for(int i = 0; i < 48; ++i)
+    for(int i = 0; i < 36; ++i)
     {
       if(f1 <= f2) { b = x2; x2 = x1; f2 = f1; x1 = b - r * (b - a); f1 = fn(x1); }
       else { a = x1; x1 = x2; f1 = f2; x2 = a + r * (b - a); f2 = fn(x2); }
