@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <map>
 #include <set>
 #include <string>
@@ -66,13 +65,13 @@ void zigzag_becomes_straight()
   BOOST_TEST(int(c0.front) == int(FS::Boundary_end::BORDER));
   BOOST_TEST(int(c0.back) == int(FS::Boundary_end::BORDER));
   const double straight = 2 * std::sqrt(1 + 0.37 * 0.37);
-  std::cout << "zigzag: initial " << c0.length() << " straight " << straight << std::endl;
+  BOOST_TEST_MESSAGE("zigzag: initial " << c0.length() << " straight " << straight);
   BOOST_TEST(c0.length() > 1.05 * straight);
   const FS::Boundary_smoothing_report r = FS::smooth_patch_boundaries(b);
   const auto& c = b.curves()[0];
   const double chord = distance(c.points.front().point, c.points.back().point);
-  std::cout << "zigzag: after " << r.number_of_iterations << " iterations " << c.length() << " chord " << chord
-            << " moves " << r.number_of_vertex_moves << std::endl;
+  BOOST_TEST_MESSAGE("zigzag: after " << r.number_of_iterations << " iterations " << c.length() << " chord " << chord
+            << " moves " << r.number_of_vertex_moves);
   BOOST_TEST(c.length() <= 1.02 * chord);
   for(std::size_t i = 1; i < r.energy.size(); ++i) BOOST_TEST(r.energy[i] <= r.energy[i - 1]);
 }
@@ -244,10 +243,10 @@ BOOST_AUTO_TEST_CASE(closed_curve)
   BOOST_TEST(std::max(c.left_patch, c.right_patch) == 7u);
   BOOST_TEST(b.length() == c.length(), boost::test_tools::tolerance(1e-9));
   const double circle = 2 * M_PI * std::sqrt(0.75);
-  std::cout << "closed: " << c.length() << " circle " << circle << std::endl;
+  BOOST_TEST_MESSAGE("closed: " << c.length() << " circle " << circle);
   BOOST_TEST(c.length() > 1.2 * circle); // the dual polyline zigzags: 7.08
   const FS::Boundary_smoothing_report r = smooth_and_check(b, 20);
-  std::cout << "closed after: " << b.length() << " moves " << r.number_of_vertex_moves << std::endl;
+  BOOST_TEST_MESSAGE("closed after: " << b.length() << " moves " << r.number_of_vertex_moves);
   BOOST_TEST(b.length() < r.length.front());
   BOOST_TEST(std::abs(b.length() - circle) < 0.1 * circle);
   BOOST_TEST(b.curves()[0].is_closed());
@@ -295,9 +294,9 @@ void moves_onto_crease()
   const auto before = spread();
   const FS::Boundary_smoothing_report r = smooth_and_check(b, 20);
   const auto after = spread();
-  std::cout << "crease: |x| max/mean before " << before.first << "/" << before.second << " after "
+  BOOST_TEST_MESSAGE("crease: |x| max/mean before " << before.first << "/" << before.second << " after "
             << after.first << "/" << after.second << ", energy " << r.energy.front() << " -> " << r.energy.back()
-            << ", moves " << r.number_of_vertex_moves << std::endl;
+            << ", moves " << r.number_of_vertex_moves);
   BOOST_TEST(before.second > 0.03);
   BOOST_TEST(after.first < 0.001);
 }
@@ -376,9 +375,9 @@ BOOST_AUTO_TEST_CASE(fandisk)
   FS::Patch_boundaries<SM> b = FS::compute_patch_boundaries(m, vp);
   BOOST_TEST(b.number_of_patches() == n);
   const FS::Boundary_smoothing_report r = smooth_and_check(b, 10);
-  std::cout << "fandisk: " << n << " patches, " << b.curves().size() << " curves, energy " << r.energy.front()
+  BOOST_TEST_MESSAGE("fandisk: " << n << " patches, " << b.curves().size() << " curves, energy " << r.energy.front()
             << " -> " << r.energy.back() << ", length " << r.length.front() << " -> " << r.length.back() << ", moves "
-            << r.number_of_vertex_moves << std::endl;
+            << r.number_of_vertex_moves);
   // the initial curves already pass through the feature points (the dual vertices of the
   // triangles on features), so the gain is smaller than on a zigzag: 5.19 -> 4.73
   BOOST_TEST(r.energy.back() < 0.95 * r.energy.front());
