@@ -10,9 +10,14 @@ the edges whose endpoints are in different clusters (the cut cost, see `cut_cost
 A positive weight asks for its endpoints to be in the same cluster, a negative weight for
 them to be separated; the number of clusters is not given but follows from the weights.
 
-The segmentation builds a `Correlation_clustering_graph` (on the vertices of the mesh or on
-the patches of an oversegmentation) and hands it to a model of this concept; the same
-solver object may be called many times, e.g.\ after every edit of a weight parameter.
+The segmentation builds a `CGAL::Feature_segmentation::Correlation_clustering_graph` (on
+the vertices of the mesh, or on the oversegments of the reduced graph G') and hands it to
+a model of this concept, given by the named parameter `solver` of
+`CGAL::Feature_segmentation::segment_along_features()` and of
+`CGAL::Feature_segmentation::Feature_aligned_segmentation`. The object is copied once and
+the copy is called many times, e.g.\ after every edit of a weight parameter, and only on
+the part of the graph that an edit touches, so the operator is `const` and a model keeps
+no state from one call to the next.
 Since the problem is NP-hard, models are heuristics: they differ in speed and in how
 close they come to the optimum, not in what they return.
 
@@ -25,12 +30,20 @@ Requirements on every model:
   labels on every run and platform (no dependence on hash iteration order, no unseeded
   randomness).
 
-\cgalHasModel `CGAL::Feature_segmentation::Greedy_additive_edge_contraction`
-\cgalHasModel `CGAL::Feature_segmentation::Kernighan_lin_with_joins`
-\cgalHasModel `CGAL::Feature_segmentation::Solver_sequence`
-\cgalHasModel `CGAL::Feature_segmentation::Default_correlation_clustering_solver`
+Nothing else is required: the package's test `test_solver_concept.cpp` runs an archetype, a
+class with exactly the copy constructor and the operator below, through
+`CGAL::Feature_segmentation::segment_along_features()`. The example
+`custom_solver_example.cpp` (\ref fs_example_custom_solver) plugs in a user-written model.
 
-\sa `CGAL::Feature_segmentation::Correlation_clustering_graph`
+\cgalHasModelsBegin
+\cgalHasModels{`CGAL::Feature_segmentation::Greedy_additive_edge_contraction`}
+\cgalHasModels{`CGAL::Feature_segmentation::Kernighan_lin_with_joins`}
+\cgalHasModels{`CGAL::Feature_segmentation::Solver_sequence`}
+\cgalHasModels{`CGAL::Feature_segmentation::Default_correlation_clustering_solver` (the default)}
+\cgalHasModelsEnd
+
+\sa `CGAL::Feature_segmentation::Correlation_clustering_graph`, `CGAL::Feature_segmentation::cut_cost()`
+\sa \ref fs_api_solver in the user manual
 */
 class CorrelationClusteringSolver
 {
@@ -55,8 +68,10 @@ public:
     \param labels on entry, either empty, meaning that there is no initial partition (a
            solver that needs one starts from singletons), or of size
            `g.number_of_nodes()`, holding an initial partition with arbitrary label
-           values, which a solver may improve (`Kernighan_lin_with_joins` does, and never
-           returns a worse one) or ignore (`Greedy_additive_edge_contraction` does, as
+           values, which a solver may improve
+           (`CGAL::Feature_segmentation::Kernighan_lin_with_joins` does, and never returns
+           a worse one) or ignore
+           (`CGAL::Feature_segmentation::Greedy_additive_edge_contraction` does, as
            documented). On exit, `labels.size() == g.number_of_nodes()` and `labels[i]`
            is the cluster of node `i`, normalised to `0, ..., k-1` in order of first
            appearance.
