@@ -46,7 +46,8 @@ namespace Feature_segmentation {
 /// | `add_sketch()` | terms of the faces around the sketch, the oversegmentation inside the patches it touches, G', their clustering | O(faces in those patches log) + O(E) |
 /// | `undo()` | restores the state before the last edit | O(V) (plus a copy of the features for a sketch) |
 ///
-/// where E' is the number of edges of G' (a few thousand on a 200k-face CAD model).
+/// where E' is the number of edges of G' (18,374 on rockerarm remeshed to 196,566 faces,
+/// against 294,849 edges in the mesh).
 /// Local edits and sketches re-solve only the current patches they touch, so the other
 /// patches keep their vertices (their ids may change: ids are renumbered in vertex order
 /// after each edit).

@@ -87,7 +87,6 @@ struct Principal_curvatures
 /// \param np optional named parameters:
 ///   - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
 ///   - `geom_traits`: default the kernel of the point type
-///   - `vertex_index_map`: default an internal or initialised index map
 ///   - `neighborhood_rings` (unsigned int, at least 1): default 2
 template <typename TriangleMesh, typename VertexCurvatureMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
