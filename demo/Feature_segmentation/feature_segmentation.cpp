@@ -1,17 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The command-line program of the package: reads a mesh, runs the pipeline stage by
-// stage (load -> curvature -> feature lines -> segmentation), each stage timed, and
-// writes the feature lines (CGAL polylines and OBJ), the segmentation (a PLY mesh with a
-// patch id and colour per face, and the patch of every vertex and face of the input file)
-// and a JSON summary into an output folder. Bad input or bad options give one
-// "error: ..." line on stderr and a non-zero exit status.
+// stage (load -> curvature -> feature lines -> segmentation -> the edits of an edit
+// script, if given), each stage and each edit timed, and writes the feature lines
+// (CGAL polylines and OBJ), the segmentation (a PLY mesh with a patch id and colour per
+// face, and the patch of every vertex and face of the input file) and a JSON summary
+// into an output folder. Bad input or bad options give one "error: ..." line on stderr
+// and a non-zero exit status.
 
+#include "edit_script.h"
 #include "read_input_mesh.h"
 #include "read_user_feature_lines.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/Greedy_additive_edge_contraction.h>
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
@@ -22,7 +25,7 @@
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/parameters.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
-#include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/Watershed_distance.h>
 
 #include <CGAL/property_map.h>
 
@@ -74,6 +77,9 @@ struct Options
   double alpha = 0.6;
   double gamma = 0.05;
   std::string solver = "gaec+klj";
+  bool full_graph = false;
+  std::string watershed = "anisotropic";
+  std::string edits_file;                   // empty: no edits
   bool quiet = false;
   bool help = false;
 };
@@ -91,7 +97,8 @@ void print_usage(std::ostream& os)
      << "  DIR/face_patches.txt             the patch of every face of MESH, one per line\n"
      << "  DIR/vertex_patches.txt           the patch of every vertex of MESH, one per line\n"
      << "  DIR/summary.json                 mesh and feature counts, patches, cut cost,\n"
-     << "                                   seconds per stage\n"
+     << "                                   oversegments, seconds per stage, and for each\n"
+     << "                                   edit of --edits its patches, cut cost, seconds\n"
      << "\n"
      << "MESH is an .off, .obj, .ply or .stl file (default: " << FS_MESH_DIR << "/fandisk.off).\n"
      << "Quads and polygons are triangulated, duplicate points and faces removed, with a\n"
@@ -123,8 +130,38 @@ void print_usage(std::ostream& os)
      << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
      << "                            edge contraction, then Kernighan-Lin with joins),\n"
      << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"
+     << "  --full-graph              cluster the full vertex graph, not the reduced graph G'\n"
+     << "                            of the watershed oversegmentation (slower)\n"
+     << "  --watershed NAME          distance of the watershed oversegmentation: anisotropic\n"
+     << "                            (the paper's) or geodesic (default: anisotropic)\n"
+     << "  --edits FILE              apply the edit script FILE (below) after the automatic\n"
+     << "                            segmentation; the patch outputs are the edited result\n"
      << "  --quiet                   no progress or notice lines on stderr\n"
-     << "  --help                    print this help and exit\n";
+     << "  --help                    print this help and exit\n"
+     << "\n"
+     << "Edit scripts (--edits FILE): one edit per line, applied in order; '#' starts a\n"
+     << "comment, blank lines are ignored. Numbers are decimal, finite.\n"
+     << "  alpha A                   global refine/coarsen: set alpha to A (the alpha_e of\n"
+     << "                            every feature edge moves by A - alpha)\n"
+     << "  refine REGION D           local refine: add D to alpha_e on the feature edges\n"
+     << "                            of REGION, re-solve the patches it touches\n"
+     << "  coarsen REGION D          local coarsen: subtract D from those alpha_e\n"
+     << "  scale REGION F            multiply those alpha_e by F >= 0\n"
+     << "  merge REGION              merge the patches that REGION touches (kept by later\n"
+     << "                            solves)\n"
+     << "  sketch [alpha A] X Y Z X Y Z ...\n"
+     << "                            a sketched feature line through two points or more,\n"
+     << "                            each moved to the nearest point of the surface; the\n"
+     << "                            edges it crosses get alpha_e >= A > 1 (default: 2)\n"
+     << "  undo                      take back the last edit not yet undone\n"
+     << "REGION is 'ball X Y Z R' (the faces whose centroid lies within R > 0 of X Y Z) or\n"
+     << "'faces I J ...' (faces of MESH numbered from 0 in file order, as in\n"
+     << "face_patches.txt; a triangulated polygon stands for all its triangles). A region\n"
+     << "without faces, or a merge inside one patch, changes nothing. A mistake in the\n"
+     << "script gives 'error: FILE:LINE: reason' and exit status 1 before the segmentation\n"
+     << "runs or anything is written. summary.json lists every edit (\"edits\"): its line, verb,\n"
+     << "the patches and cut cost after it, and its seconds (the library's re-weighting and\n"
+     << "re-solve; the region search or point location apart, as prepare_seconds).\n";
 }
 
 // Strict number parsing: the whole argument must be the number ("1.5x", "", "abc",
@@ -171,6 +208,7 @@ Options parse_command_line(int argc, char** argv)
 {
   Options options;
   bool has_input = false;
+  bool has_watershed = false;
   for(int i = 1; i < argc; ++i)
   {
     std::string arg = argv[i];
@@ -245,6 +283,20 @@ Options parse_command_line(int argc, char** argv)
       if(options.solver != "gaec+klj" && options.solver != "gaec" && options.solver != "klj")
         throw Usage_error("--solver must be gaec+klj, gaec or klj (got '" + options.solver + "')");
     }
+    else if(arg == "--full-graph") { refuse_value(); options.full_graph = true; }
+    else if(arg == "--watershed")
+    {
+      options.watershed = take_value();
+      has_watershed = true;
+      if(options.watershed != "anisotropic" && options.watershed != "geodesic")
+        throw Usage_error("--watershed must be anisotropic or geodesic (got '" + options.watershed + "')");
+    }
+    else if(arg == "--edits")
+    {
+      options.edits_file = take_value();
+      if(options.edits_file.empty())
+        throw Usage_error("--edits expects a file name");
+    }
     else if(arg.size() > 1 && arg[0] == '-')
       throw Usage_error("unknown option '" + arg + "' (see --help)");
     else
@@ -257,6 +309,8 @@ Options parse_command_line(int argc, char** argv)
   }
   if(!options.ridges && !options.valleys && !options.quiet && !options.help)
     std::cerr << "notice: --no-ridges and --no-valleys: no crest lines will be detected\n";
+  if(options.full_graph && has_watershed && !options.quiet && !options.help)
+    std::cerr << "notice: --full-graph: no oversegmentation, --watershed has no effect\n";
   return options;
 }
 
@@ -385,9 +439,13 @@ struct Results
   std::size_t number_of_valleys = 0;
   std::size_t number_of_user_lines = 0;
   std::size_t number_of_lines = 0;
-  std::size_t number_of_patches = 0;
-  double cut_cost = 0;
-  double solver_seconds = 0;
+  std::size_t number_of_patches = 0;       // after the edits
+  double cut_cost = 0;                     // after the edits
+  std::size_t number_of_automatic_patches = 0; // before the edits
+  double automatic_cut_cost = 0;           // before the edits
+  std::size_t number_of_oversegments = 0;
+  double solver_seconds = 0;               // of the automatic segmentation
+  std::vector<fs_demo::Edit_record> edits;
 };
 
 void write_summary(std::ostream& os, const Options& options, const Results& r,
@@ -408,6 +466,10 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
                                             : json_string(options.feature_edges_file)) << ",\n"
      << "    \"alpha\": " << json_number(options.alpha) << ",\n"
      << "    \"gamma\": " << json_number(options.gamma) << ",\n"
+     << "    \"full_graph\": " << (options.full_graph ? "true" : "false") << ",\n"
+     << "    \"watershed\": " << json_string(options.watershed) << ",\n"
+     << "    \"edits_file\": "
+     << (options.edits_file.empty() ? std::string("null") : json_string(options.edits_file)) << ",\n"
      << "    \"solver\": " << json_string(options.solver) << "\n"
      << "  },\n"
      << "  \"input_file\": {\n"
@@ -435,8 +497,29 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "  \"segmentation\": {\n"
      << "    \"patches\": " << r.number_of_patches << ",\n"
      << "    \"cut_cost\": " << json_number(r.cut_cost) << ",\n"
+     << "    \"automatic_patches\": " << r.number_of_automatic_patches << ",\n"
+     << "    \"automatic_cut_cost\": " << json_number(r.automatic_cut_cost) << ",\n"
+     << "    \"oversegments\": " << r.number_of_oversegments << ",\n"
      << "    \"solver_seconds\": " << json_number(r.solver_seconds, 6) << "\n"
-     << "  },\n"
+     << "  },\n";
+  // One edit per line, so that a line-based tool reads them.
+  os << "  \"edits\": [";
+  for(std::size_t i = 0; i < r.edits.size(); ++i)
+  {
+    const fs_demo::Edit_record& e = r.edits[i];
+    os << (i == 0 ? "\n" : ",\n") << "    {\"line\": " << e.line << ", \"verb\": " << json_string(e.verb)
+       << ", \"patches\": " << e.patches << ", \"cut_cost\": " << json_number(e.cut_cost);
+    if(e.verb == "undo")
+      os << ", \"undone_line\": " << e.undone_line;
+    else if(e.verb == "sketch")
+      os << ", \"points\": " << e.points;
+    else if(e.verb != "alpha")
+      os << ", \"faces\": " << e.faces;
+    os << ", \"seconds\": " << json_number(e.seconds, 6)
+       << ", \"solver_seconds\": " << json_number(e.solver_seconds, 6)
+       << ", \"prepare_seconds\": " << json_number(e.prepare_seconds, 6) << "}";
+  }
+  os << (r.edits.empty() ? "],\n" : "\n  ],\n")
      << "  \"seconds\": {\n";
   double total = 0;
   for(const auto& s : seconds)
@@ -475,6 +558,12 @@ int run(const Options& options)
     throw std::runtime_error(options.output_dir + ": cannot create the output folder" +
                              (ec ? " (" + ec.message() + ")" : std::string()));
 
+  // A mistake in the edit script is found before the mesh is read; face indices are
+  // checked against the file as soon as it is read.
+  fs_demo::Edit_script script;
+  if(!options.edits_file.empty())
+    script = fs_demo::read_edit_script(options.edits_file);
+
   Mesh mesh;
   fs_demo::Input_correspondence<Mesh> correspondence;
   results.read_report = timer.run("load", [&]() {
@@ -483,6 +572,7 @@ int run(const Options& options)
   if(!options.quiet)
     for(const std::string& notice : results.read_report.notices)
       std::cerr << "notice: " << options.input << ": " << notice << '\n';
+  fs_demo::check_face_indices(script, results.read_report.number_of_file_faces);
   results.number_of_vertices = num_vertices(mesh);
   results.number_of_edges = num_edges(mesh);
   results.number_of_faces = num_faces(mesh);
@@ -525,24 +615,53 @@ int run(const Options& options)
 
   // The curvature and the lines (detected and the user's) of the stages above, so that
   // this stage times the weights and the solve only.
-  auto vertex_patch = mesh.add_property_map<Mesh::Vertex_index, long>("v:fs_patch", -1).first;
-  auto face_patch = mesh.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
-  results.number_of_patches = timer.run("segmentation", [&]() {
-    return FS::segment_along_features(
-      mesh, vertex_patch,
-      FS::parameters::alpha(options.alpha)
-        .gamma(options.gamma)
-        .principal_curvature_map(curvature_map)
-        .feature_lines(std::cref(lines))
-        .solver(Timed_solver(options.solver, results.solver_seconds))
-        .face_patch_map(face_patch)
-        .cut_cost_output(&results.cut_cost));
+  // The class keeps the precomputation for the edits (segment_along_features() is its
+  // one-shot use: the same result without edits).
+  typedef FS::Feature_aligned_segmentation<Mesh> Segmentation;
+  double last_solver_seconds = 0; // written by the solver at each solve
+  std::optional<Segmentation> segmentation;
+  timer.run("segmentation", [&]() {
+    segmentation.emplace(
+      mesh, FS::parameters::alpha(options.alpha)
+              .gamma(options.gamma)
+              .principal_curvature_map(curvature_map)
+              .feature_lines(std::cref(lines))
+              .solver(Timed_solver(options.solver, last_solver_seconds))
+              .use_oversegmentation(!options.full_graph)
+              .watershed_distance(options.watershed == "geodesic" ? FS::Watershed_distance::GEODESIC
+                                                                  : FS::Watershed_distance::ANISOTROPIC));
   });
+  results.solver_seconds = last_solver_seconds;
+  results.number_of_automatic_patches = results.number_of_patches = segmentation->number_of_patches();
+  results.automatic_cut_cost = results.cut_cost = segmentation->cut_cost();
+  results.number_of_oversegments = segmentation->number_of_oversegments();
   if(!options.quiet)
     std::cerr << "segmentation: " << results.number_of_patches << " patches, cut cost "
-              << results.cut_cost << " (solver " << options.solver << ": " << std::fixed
-              << std::setprecision(3) << results.solver_seconds << " s)" << std::defaultfloat
-              << std::endl;
+              << results.cut_cost << ", " << results.number_of_oversegments << " oversegments"
+              << " (solver " << options.solver << ": " << std::fixed << std::setprecision(3)
+              << results.solver_seconds << " s)" << std::defaultfloat << std::endl;
+
+  if(!script.edits.empty())
+  {
+    fs_demo::Edit_runner<Mesh, K> runner(mesh, correspondence, *segmentation, last_solver_seconds);
+    timer.run("edits", [&]() {
+      for(const fs_demo::Script_edit& e : script.edits)
+      {
+        results.edits.push_back(runner.apply(script, e));
+        const fs_demo::Edit_record& r = results.edits.back();
+        if(!options.quiet)
+          std::cerr << "edit " << options.edits_file << ":" << r.line << " " << r.verb << ": "
+                    << r.patches << " patches, cut cost " << r.cut_cost << " (" << std::fixed
+                    << std::setprecision(3) << r.seconds << " s)" << std::defaultfloat << std::endl;
+      }
+    });
+    results.number_of_patches = segmentation->number_of_patches();
+    results.cut_cost = segmentation->cut_cost();
+  }
+  auto vertex_patch = mesh.add_property_map<Mesh::Vertex_index, long>("v:fs_patch", -1).first;
+  auto face_patch = mesh.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
+  segmentation->vertex_patches(vertex_patch);
+  segmentation->face_patches(face_patch);
 
   // The patch of every point and face of the input file, in file order (-1: a point no
   // face uses).
@@ -602,6 +721,10 @@ int main(int argc, char** argv)
     return run(options);
   }
   catch(const fs_demo::Input_error& e)
+  {
+    std::cerr << "error: " << e.what() << '\n';
+  }
+  catch(const fs_demo::Edit_script_error& e)
   {
     std::cerr << "error: " << e.what() << '\n';
   }

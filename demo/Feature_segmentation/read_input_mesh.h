@@ -79,6 +79,20 @@ struct Input_correspondence
   /// For each face of the file, in file order: its mesh face, the first triangle of a
   /// triangulated polygon; for a duplicate face, the face of its first occurrence.
   std::vector<face_descriptor> face_of_file_face;
+  /// Every mesh face that a face of the file became (one triangle, or the triangles of a
+  /// triangulated polygon): for face `f` of the file, `number_of_triangles[f]` faces of
+  /// `triangles` from `triangles_begin[f]` on. A duplicate face has its first
+  /// occurrence's. Read through `mesh_faces_of_file_face()`.
+  std::vector<face_descriptor> triangles;
+  std::vector<std::size_t> triangles_begin;     ///< see `triangles`
+  std::vector<std::size_t> number_of_triangles; ///< see `triangles`
+
+  /// Appends to `out` every mesh face that face `f` of the file became.
+  void mesh_faces_of_file_face(std::size_t f, std::vector<face_descriptor>& out) const
+  {
+    out.insert(out.end(), triangles.begin() + static_cast<std::ptrdiff_t>(triangles_begin[f]),
+               triangles.begin() + static_cast<std::ptrdiff_t>(triangles_begin[f] + number_of_triangles[f]));
+  }
 };
 
 namespace internal {
@@ -402,25 +416,22 @@ void merge_duplicates(const std::string& path, std::vector<Point>& points,
   polygons.swap(kept);
 }
 
-// A triangulation visitor that records the first triangle made from a face.
+// A triangulation visitor that records the triangles made from a face, in the order of
+// their creation.
 template <typename Mesh>
-class First_subface_visitor
+class Subface_visitor
 {
 public:
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 
-  explicit First_subface_visitor(face_descriptor& first) : m_first(&first) {}
+  explicit Subface_visitor(std::vector<face_descriptor>& subfaces) : m_subfaces(&subfaces) {}
 
-  void before_subface_creations(face_descriptor) { *m_first = boost::graph_traits<Mesh>::null_face(); }
-  void after_subface_created(face_descriptor f)
-  {
-    if(*m_first == boost::graph_traits<Mesh>::null_face())
-      *m_first = f;
-  }
+  void before_subface_creations(face_descriptor) { m_subfaces->clear(); }
+  void after_subface_created(face_descriptor f) { m_subfaces->push_back(f); }
   void after_subface_creations() {}
 
 private:
-  face_descriptor* m_first; // the visitor is copied: the result lives with the caller
+  std::vector<face_descriptor>* m_subfaces; // the visitor is copied: the result lives with the caller
 };
 
 } // namespace internal
@@ -541,20 +552,28 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
   std::vector<std::size_t> file_face_of_polygon(polygons.size(), internal::no_index);
   for(std::size_t f = polygon_of_file_face.size(); f-- > 0;)
     file_face_of_polygon[polygon_of_file_face[f]] = f; // the first file face wins
+  std::vector<std::size_t> polygon_begin(polygons.size() + 1, 0);
+  std::vector<face_descriptor> subfaces;
+  correspondence.triangles.clear();
   for(std::size_t p = 0; p < polygons.size(); ++p)
   {
+    polygon_begin[p] = correspondence.triangles.size();
     if(polygons[p].size() == 3)
+    {
+      correspondence.triangles.push_back(face_of_polygon[p]);
       continue;
+    }
     ++report.number_of_triangulated_faces;
-    face_descriptor first_triangle = boost::graph_traits<Mesh>::null_face();
+    subfaces.clear();
     if(!PMP::triangulate_face(face_of_polygon[p], mesh,
-                              CGAL::parameters::visitor(
-                                internal::First_subface_visitor<Mesh>(first_triangle))) ||
-       first_triangle == boost::graph_traits<Mesh>::null_face())
+                              CGAL::parameters::visitor(internal::Subface_visitor<Mesh>(subfaces))) ||
+       subfaces.empty())
       throw Input_error(path + ": " + internal::face_name(file_face_of_polygon[p]) +
                         " (a quad or polygon) cannot be triangulated");
-    face_of_polygon[p] = first_triangle;
+    face_of_polygon[p] = subfaces.front();
+    correspondence.triangles.insert(correspondence.triangles.end(), subfaces.begin(), subfaces.end());
   }
+  polygon_begin[polygons.size()] = correspondence.triangles.size();
   if(report.number_of_triangulated_faces > 0)
     report.notices.push_back("triangulated " + std::to_string(report.number_of_triangulated_faces) +
                              " faces (quads or polygons)");
@@ -565,8 +584,15 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
     if(point_of_file_point[i] != internal::no_index)
       correspondence.vertex_of_file_point[i] = vertex_of_point[point_of_file_point[i]];
   correspondence.face_of_file_face.resize(polygon_of_file_face.size());
+  correspondence.triangles_begin.resize(polygon_of_file_face.size());
+  correspondence.number_of_triangles.resize(polygon_of_file_face.size());
   for(std::size_t f = 0; f < polygon_of_file_face.size(); ++f)
-    correspondence.face_of_file_face[f] = face_of_polygon[polygon_of_file_face[f]];
+  {
+    const std::size_t p = polygon_of_file_face[f];
+    correspondence.face_of_file_face[f] = face_of_polygon[p];
+    correspondence.triangles_begin[f] = polygon_begin[p];
+    correspondence.number_of_triangles[f] = polygon_begin[p + 1] - polygon_begin[p];
+  }
 
   try
   {

@@ -1,0 +1,427 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The edit script of the program `feature_segmentation` (option --edits): a small
+// line-based language that reaches every edit of Feature_aligned_segmentation (paper,
+// Section 4) in batch form. This file reads and checks a script, turns its regions and
+// sketch points into mesh faces and located points, and applies its edits one by one,
+// timing each. Every mistake in a script is one Edit_script_error "FILE:LINE: reason".
+//
+// The language, one edit per line ('#' starts a comment; blank lines are ignored):
+//   alpha A                  set the global alpha to A (global refine/coarsen)
+//   refine REGION D          add D to alpha_e on the feature edges of REGION
+//   coarsen REGION D         subtract D from alpha_e on the feature edges of REGION
+//   scale REGION F           multiply alpha_e on the feature edges of REGION by F >= 0
+//   merge REGION             merge the patches that REGION touches
+//   sketch [alpha A] X Y Z X Y Z ...   a sketched feature line through >= 2 points,
+//                            each moved to the nearest point of the surface (A > 1, default 2)
+//   undo                     take back the last edit not yet undone
+// REGION is 'ball X Y Z R' (the faces whose centroid lies within R > 0 of (X, Y, Z)) or
+// 'faces I J ...' (faces of the input file, numbered from 0 in file order; a polygon
+// that was triangulated stands for all its triangles).
+
+#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
+#define CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
+
+#include "read_input_mesh.h"
+
+#include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+#include <CGAL/Feature_segmentation/input_checks.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fs_demo {
+
+/// A mistake in an edit script (or a script that cannot be read); the message is
+/// "FILE:LINE: reason" (or "FILE: reason").
+class Edit_script_error : public std::runtime_error
+{
+public:
+  explicit Edit_script_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// A region of the mesh named in a script.
+struct Script_region
+{
+  bool is_ball = true;
+  std::array<double, 3> center = {0., 0., 0.}; ///< a ball's centre
+  double radius = 0;                           ///< a ball's radius, > 0
+  std::vector<std::size_t> file_faces;         ///< 'faces': indices of faces of the input file
+};
+
+/// One line of a script.
+struct Script_edit
+{
+  std::size_t line = 0;
+  std::string verb;  ///< alpha, refine, coarsen, scale, merge, sketch or undo
+  double value = 0;  ///< alpha: A; refine: D; coarsen: -D; scale: F; sketch: its alpha
+  Script_region region;                        ///< refine, coarsen, scale, merge
+  std::vector<std::array<double, 3> > points;  ///< sketch
+};
+
+/// A parsed script.
+struct Edit_script
+{
+  std::string path;
+  std::vector<Script_edit> edits;
+};
+
+/// The sketch alpha when a `sketch` line gives none (the library's default).
+constexpr double default_sketch_alpha = 2.0;
+
+namespace internal {
+
+inline std::string script_place(const std::string& path, std::size_t line)
+{
+  return path + ":" + std::to_string(line) + ": ";
+}
+
+// The whole token must be a finite number ("1.5x", "nan", "inf" and overflows are refused).
+inline double script_number(const std::string& token, const std::string& where, const std::string& what)
+{
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(begin, &end);
+  if(end == begin || *end != '\0')
+    throw Edit_script_error(where + what + ": '" + token + "' is not a number");
+  if(!std::isfinite(x) || errno == ERANGE)
+    throw Edit_script_error(where + what + ": '" + token + "' is not a finite number");
+  return x;
+}
+
+inline std::size_t script_face_index(const std::string& token, const std::string& where)
+{
+  if(token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
+    throw Edit_script_error(where + "faces: '" + token + "' is not a face index (an integer >= 0)");
+  errno = 0;
+  const unsigned long long i = std::strtoull(token.c_str(), nullptr, 10);
+  if(errno == ERANGE)
+    throw Edit_script_error(where + "faces: face index " + token + " is out of range");
+  return static_cast<std::size_t>(i);
+}
+
+// The region in tokens [first, last): 'ball X Y Z R' or 'faces I J ...'.
+inline Script_region script_region(const std::vector<std::string>& tokens, std::size_t first,
+                                   std::size_t last, const std::string& where,
+                                   const std::string& usage)
+{
+  Script_region r;
+  const std::string kind = first < tokens.size() ? tokens[first] : std::string();
+  if(kind == "ball")
+  {
+    if(last - first != 5)
+      throw Edit_script_error(where + tokens[0] + ": a ball is 'ball X Y Z R' (usage: " + usage + ")");
+    for(int k = 0; k < 3; ++k)
+      r.center[k] = script_number(tokens[first + 1 + k], where, "ball");
+    r.radius = script_number(tokens[first + 4], where, "ball");
+    if(!(r.radius > 0))
+      throw Edit_script_error(where + "ball: the radius must be > 0 (got " + tokens[first + 4] + ")");
+    return r;
+  }
+  if(kind == "faces")
+  {
+    if(last - first < 2)
+      throw Edit_script_error(where + tokens[0] + ": 'faces' needs at least one face index (usage: " +
+                              usage + ")");
+    r.is_ball = false;
+    for(std::size_t i = first + 1; i < last; ++i)
+      r.file_faces.push_back(script_face_index(tokens[i], where));
+    return r;
+  }
+  throw Edit_script_error(where + tokens[0] + ": expected a region, 'ball X Y Z R' or 'faces I J ...' (got " +
+                          (kind.empty() ? std::string("nothing") : "'" + kind + "'") + "; usage: " +
+                          usage + ")");
+}
+
+} // namespace internal
+
+/// Reads and checks the script `path` (everything but the range of face indices, which
+/// needs the mesh: see `check_face_indices()`).
+/// \throws Edit_script_error on the first mistake
+inline Edit_script read_edit_script(const std::string& path)
+{
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if(!std::filesystem::exists(st))
+    throw Edit_script_error(path + ": no such file");
+  if(std::filesystem::is_directory(st))
+    throw Edit_script_error(path + ": is a directory, not an edit script");
+  std::ifstream in(path);
+  if(!in)
+    throw Edit_script_error(path + ": cannot be opened");
+  Edit_script script;
+  script.path = path;
+  std::size_t undoable = 0; // edits that an 'undo' can still take back
+  std::string text;
+  for(std::size_t line = 1; std::getline(in, text); ++line)
+  {
+    const std::size_t hash = text.find('#');
+    if(hash != std::string::npos)
+      text.erase(hash);
+    std::istringstream words(text);
+    std::vector<std::string> t;
+    for(std::string w; words >> w;)
+      t.push_back(w);
+    if(t.empty())
+      continue;
+
+    const std::string where = internal::script_place(path, line);
+    Script_edit e;
+    e.line = line;
+    e.verb = t[0];
+    const std::size_t n = t.size();
+    auto arity = [&](bool ok, const std::string& usage) {
+      if(!ok)
+        throw Edit_script_error(where + e.verb + ": wrong number of arguments (usage: " + usage + ")");
+    };
+    if(e.verb == "alpha")
+    {
+      arity(n == 2, "alpha A");
+      e.value = internal::script_number(t[1], where, "alpha");
+    }
+    else if(e.verb == "refine" || e.verb == "coarsen" || e.verb == "scale")
+    {
+      const std::string usage = e.verb + " REGION " + (e.verb == "scale" ? "F" : "D");
+      arity(n >= 3, usage);
+      e.region = internal::script_region(t, 1, n - 1, where, usage);
+      e.value = internal::script_number(t[n - 1], where, e.verb);
+      if(e.verb == "coarsen")
+        e.value = -e.value;
+      if(e.verb == "scale" && e.value < 0)
+        throw Edit_script_error(where + "scale: the factor must be >= 0 (got " + t[n - 1] + ")");
+    }
+    else if(e.verb == "merge")
+    {
+      arity(n >= 2, "merge REGION");
+      e.region = internal::script_region(t, 1, n, where, "merge REGION");
+    }
+    else if(e.verb == "sketch")
+    {
+      std::size_t first = 1;
+      e.value = default_sketch_alpha;
+      if(n > 1 && t[1] == "alpha")
+      {
+        arity(n >= 3, "sketch [alpha A] X Y Z X Y Z ...");
+        e.value = internal::script_number(t[2], where, "sketch alpha");
+        if(!(e.value > 1))
+          throw Edit_script_error(where + "sketch: alpha must be > 1 (got " + t[2] + ")");
+        first = 3;
+      }
+      const std::size_t numbers = n - first;
+      if(numbers % 3 != 0 || numbers < 6)
+        throw Edit_script_error(where + "sketch: expected at least two points of three coordinates (got " +
+                                std::to_string(numbers) + " numbers)");
+      for(std::size_t i = first; i < n; i += 3)
+        e.points.push_back({internal::script_number(t[i], where, "sketch"),
+                            internal::script_number(t[i + 1], where, "sketch"),
+                            internal::script_number(t[i + 2], where, "sketch")});
+    }
+    else if(e.verb == "undo")
+    {
+      arity(n == 1, "undo");
+      if(undoable == 0)
+        throw Edit_script_error(where + "undo: no edit to undo");
+    }
+    else
+      throw Edit_script_error(where + "unknown verb '" + e.verb +
+                              "' (expected alpha, refine, coarsen, scale, merge, sketch or undo)");
+    undoable = (e.verb == "undo") ? undoable - 1 : undoable + 1;
+    script.edits.push_back(e);
+  }
+  if(in.bad())
+    throw Edit_script_error(path + ": read failed");
+  return script;
+}
+
+/// Checks that every face index of `script` names a face of the input file.
+/// \throws Edit_script_error on the first index out of range
+inline void check_face_indices(const Edit_script& script, std::size_t number_of_file_faces)
+{
+  for(const Script_edit& e : script.edits)
+    for(std::size_t f : e.region.file_faces)
+      if(f >= number_of_file_faces)
+        throw Edit_script_error(internal::script_place(script.path, e.line) + "faces: face index " +
+                                std::to_string(f) + " is out of range (the mesh file has " +
+                                std::to_string(number_of_file_faces) + " faces)");
+}
+
+/// What one edit did, for the summary.
+struct Edit_record
+{
+  std::size_t line = 0;
+  std::string verb;
+  std::size_t patches = 0;        ///< after the edit
+  double cut_cost = 0;            ///< after the edit
+  double seconds = 0;             ///< the library's edit call (re-weighting and re-solving)
+  double prepare_seconds = 0;     ///< finding the region's faces or locating the sketch's points
+  double solver_seconds = 0;      ///< the solver's part of `seconds`
+  std::size_t faces = 0;          ///< refine, coarsen, scale, merge: faces of the region
+  std::size_t points = 0;         ///< sketch: its points
+  std::size_t undone_line = 0;    ///< undo: the line of the edit it took back
+};
+
+/// Applies the edits of a script to a segmentation, in order.
+///
+/// \tparam Mesh a `CGAL::Surface_mesh` (or another FaceListGraph with an internal point map)
+/// \tparam Kernel its kernel
+template <typename Mesh, typename Kernel>
+class Edit_runner
+{
+public:
+  typedef CGAL::Feature_segmentation::Feature_aligned_segmentation<Mesh> Segmentation;
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+
+  /// `solver_seconds` is where the segmentation's solver writes the time of its last
+  /// run (set to 0 before each edit, since a merge or an undo runs no solver).
+  Edit_runner(const Mesh& mesh, const Input_correspondence<Mesh>& correspondence,
+              Segmentation& segmentation, double& solver_seconds)
+    : m_mesh(mesh), m_correspondence(correspondence), m_segmentation(segmentation),
+      m_solver_seconds(solver_seconds)
+  {}
+
+  /// Applies `e`.
+  /// \throws Edit_script_error if the library refuses the edit
+  Edit_record apply(const Edit_script& script, const Script_edit& e)
+  {
+    typedef std::chrono::steady_clock Clock;
+    Edit_record r;
+    r.line = e.line;
+    r.verb = e.verb;
+    m_solver_seconds = 0;
+    const auto start = Clock::now();
+    std::vector<face_descriptor> faces;
+    std::vector<typename Segmentation::Sketch_point> sketch;
+    if(e.verb == "refine" || e.verb == "coarsen" || e.verb == "scale" || e.verb == "merge")
+    {
+      faces = region_faces(e.region);
+      r.faces = faces.size();
+    }
+    else if(e.verb == "sketch")
+    {
+      sketch = locate(e.points);
+      r.points = sketch.size();
+    }
+    const auto prepared = Clock::now();
+    const std::size_t undoable = m_segmentation.number_of_undoable_edits();
+    try
+    {
+      if(e.verb == "alpha")
+        m_segmentation.set_alpha(e.value);
+      else if(e.verb == "refine" || e.verb == "coarsen")
+        m_segmentation.add_to_alpha(faces, e.value);
+      else if(e.verb == "scale")
+        m_segmentation.multiply_alpha(faces, e.value);
+      else if(e.verb == "merge")
+        m_segmentation.merge_patches(faces);
+      else if(e.verb == "sketch")
+        m_segmentation.add_sketch(sketch, e.value);
+    }
+    catch(const CGAL::Feature_segmentation::Invalid_input& error)
+    {
+      throw Edit_script_error(internal::script_place(script.path, e.line) + e.verb + ": " + error.what());
+    }
+    if(e.verb == "undo")
+    {
+      // The library records no undo step for an edit that changed nothing (an empty
+      // region, a merge inside one patch): undoing such an edit changes nothing either.
+      CGAL_assertion(!m_done.empty());
+      const Done last = m_done.back();
+      m_done.pop_back();
+      if(last.recorded)
+        m_segmentation.undo();
+      r.undone_line = last.line;
+    }
+    else
+      m_done.push_back({e.line, m_segmentation.number_of_undoable_edits() > undoable});
+    const auto end = Clock::now();
+    r.prepare_seconds = std::chrono::duration<double>(prepared - start).count();
+    r.seconds = std::chrono::duration<double>(end - prepared).count();
+    r.solver_seconds = m_solver_seconds;
+    r.patches = m_segmentation.number_of_patches();
+    r.cut_cost = m_segmentation.cut_cost();
+    return r;
+  }
+
+private:
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
+  struct Done
+  {
+    std::size_t line;
+    bool recorded; // whether the library recorded an undo step for it
+  };
+
+  std::vector<face_descriptor> region_faces(const Script_region& region) const
+  {
+    std::vector<face_descriptor> found;
+    if(region.is_ball)
+    {
+      const typename Kernel::Point_3 c(region.center[0], region.center[1], region.center[2]);
+      const double r2 = region.radius * region.radius;
+      for(face_descriptor f : faces(m_mesh))
+      {
+        std::array<typename Kernel::Point_3, 3> p;
+        int k = 0;
+        for(auto v : CGAL::vertices_around_face(halfedge(f, m_mesh), m_mesh))
+          p[k++] = m_mesh.point(v);
+        if(CGAL::to_double(CGAL::squared_distance(CGAL::centroid(p[0], p[1], p[2]), c)) <= r2)
+          found.push_back(f);
+      }
+      return found;
+    }
+    for(std::size_t f : region.file_faces)
+      m_correspondence.mesh_faces_of_file_face(f, found);
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  }
+
+  // Each point moves to the nearest point of the surface (the AABB tree is built once).
+  std::vector<typename Segmentation::Sketch_point>
+  locate(const std::vector<std::array<double, 3> >& points)
+  {
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    if(!m_tree)
+    {
+      m_tree = std::make_unique<Tree>();
+      PMP::build_AABB_tree(m_mesh, *m_tree);
+    }
+    std::vector<typename Segmentation::Sketch_point> sketch;
+    for(const std::array<double, 3>& q : points)
+    {
+      const auto location =
+        PMP::locate_with_AABB_tree(typename Kernel::Point_3(q[0], q[1], q[2]), *m_tree, m_mesh);
+      sketch.push_back({location.first, PMP::construct_point(location, m_mesh)});
+    }
+    return sketch;
+  }
+
+  const Mesh& m_mesh;
+  const Input_correspondence<Mesh>& m_correspondence;
+  Segmentation& m_segmentation;
+  double& m_solver_seconds;
+  std::unique_ptr<Tree> m_tree;
+  std::vector<Done> m_done;
+};
+
+} // namespace fs_demo
+
+#endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
