@@ -650,7 +650,7 @@ int run(const Options& options)
         results.edits.push_back(runner.apply(script, e));
         const fs_demo::Edit_record& r = results.edits.back();
         if(!options.quiet)
-          std::cerr << "edit " << options.edits_file << ":" << r.line << " " << r.verb << ": "
+          std::cerr << "edit " << options.edits_file << ":" << r.line << ": " << r.verb << ": "
                     << r.patches << " patches, cut cost " << r.cut_cost << " (" << std::fixed
                     << std::setprecision(3) << r.seconds << " s)" << std::defaultfloat << std::endl;
       }

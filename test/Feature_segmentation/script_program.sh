@@ -403,6 +403,90 @@ run ply "$work/tetrahedron.ply" --output-dir "$work/ply" --quiet
 check "tetrahedron.ply: exit status 0 (stderr: $(tail -n 1 "$work/ply.err"))" [ "$rc" -eq 0 ]
 check "tetrahedron.ply: 4 faces" [ "$(json_int "$work/ply/summary.json" mesh faces)" = 4 ]
 
+# ---- the solve path: full graph, geodesic watershed -------------------------------------
+# The default solves the reduced graph G' of the anisotropic watershed; --full-graph
+# solves the vertex graph itself, so its nodes (reported as oversegments) are the
+# vertices; --watershed geodesic changes the oversegmentation.
+default_oversegments="$(json_int "$summary" segmentation oversegments)"
+check "fandisk: oversegments in summary (${default_oversegments:-none}), fewer than the $v vertices" \
+  [ "${default_oversegments:-0}" -ge 1 ] && [ "${default_oversegments:-0}" -lt "$v" ]
+run full_graph "$fandisk" --output-dir "$work/full_graph" --full-graph --quiet
+check "--full-graph: exit status 0 (stderr: $(tail -n 1 "$work/full_graph.err"))" [ "$rc" -eq 0 ]
+check "--full-graph: cut cost in summary" [ -n "$(json_number "$work/full_graph/summary.json" segmentation cut_cost)" ]
+check "--full-graph: one node per vertex (oversegments = $v)" \
+  [ "$(json_int "$work/full_graph/summary.json" segmentation oversegments)" = "$v" ]
+check "--full-graph recorded in summary" grep -q '^    "full_graph": true,$' "$work/full_graph/summary.json"
+run geodesic "$fandisk" --output-dir "$work/geodesic" --watershed geodesic --quiet
+check "--watershed geodesic: exit status 0 (stderr: $(tail -n 1 "$work/geodesic.err"))" [ "$rc" -eq 0 ]
+check "--watershed geodesic: cut cost in summary" \
+  [ -n "$(json_number "$work/geodesic/summary.json" segmentation cut_cost)" ]
+geodesic_oversegments="$(json_int "$work/geodesic/summary.json" segmentation oversegments)"
+check "--watershed geodesic: oversegments (${geodesic_oversegments:-none}) in [1, $v)" \
+  [ "${geodesic_oversegments:-0}" -ge 1 ] && [ "${geodesic_oversegments:-0}" -lt "$v" ]
+check "--watershed geodesic recorded in summary" grep -q '^    "watershed": "geodesic",$' "$work/geodesic/summary.json"
+run full_graph_watershed "$fandisk" --output-dir "$work/full_graph_watershed" --full-graph --watershed geodesic
+check "--full-graph --watershed: a notice that the watershed has no effect" \
+  [ "$rc" -eq 0 ] && grep -q '^notice: --full-graph: .*--watershed has no effect' "$work/full_graph_watershed.err"
+
+# ---- edit scripts --------------------------------------------------------------------------
+# fandisk, whose bounding box is [-0.46, 0.46] x [-0.26, 0.26] x [-0.5, 0.5]: a global
+# refinement, a local one, a merge taken back by undo, then a sketch along the x = 0.4,
+# y = 0.25 corner of the box (each point is moved onto the surface).
+cat > "$work/edits.txt" <<'EOF'
+# fandisk: global refine, local refine, merge, undo, sketch
+
+alpha 1.0
+refine ball 0 0 0 0.3  0.5     # the feature edges of the faces near the centre
+merge  ball 0 0 0.3 0.25
+undo
+sketch 0.4 0.25 -0.4   0.4 0.25 0   0.4 0.25 0.4
+EOF
+run edits "$fandisk" --output-dir "$work/edits" --edits "$work/edits.txt"
+check "--edits: exit status 0 (stderr: $(tail -n 1 "$work/edits.err"))" [ "$rc" -eq 0 ]
+es="$work/edits/summary.json"
+# edit LINE KEY: the value of KEY in the summary's record of the edit on script line LINE.
+edit() { sed -n "s/^    {\"line\": $1, .*\"$2\": \([^,}]*\)[,}].*\$/\1/p" "$es"; }
+check "--edits: the five edits recorded in order (alpha refine merge undo sketch)" \
+  [ "$(sed -n 's/^    {"line": \([0-9]*\), "verb": "\([a-z]*\)".*/\1 \2/p' "$es" | paste -s -d ' ')" = \
+    "3 alpha 4 refine 5 merge 6 undo 7 sketch" ]
+check "--edits: edits_file recorded in summary" grep -q '^    "edits_file": ".*edits.txt",$' "$es"
+check "--edits: seconds.edits in summary" grep -Eq '^    "edits": [0-9.e+-]+,$' "$es"
+check "--edits: every edit has its seconds" \
+  [ "$(grep -Ec '^    \{"line": .*"seconds": [0-9.e+-]+, ' "$es")" -eq 5 ]
+check "--edits: automatic_patches = patches of the run without edits ($patches)" \
+  [ "$(json_int "$es" segmentation automatic_patches)" = "$patches" ]
+# alpha 1.0 moves alpha_e to 1.0 on every feature edge and re-solves all of G': the
+# weights and the solve of --alpha 1.0.
+check "--edits: 'alpha 1.0' gives the patches of --alpha 1.0 ($(edit 3 patches) = ${patches_high:-none})" \
+  [ "$(edit 3 patches)" = "$patches_high" ]
+check "--edits: the ball of the refinement has faces ($(edit 4 faces))" [ "$(edit 4 faces)" -gt 0 ]
+check "--edits: merge does not increase the patches ($(edit 5 patches) <= $(edit 4 patches))" \
+  [ "$(edit 5 patches)" -le "$(edit 4 patches)" ]
+check "--edits: undo takes back line 5" [ "$(edit 6 undone_line)" = 5 ]
+check "--edits: undo restores the patches before the merge ($(edit 6 patches) = $(edit 4 patches))" \
+  [ "$(edit 6 patches)" = "$(edit 4 patches)" ]
+check "--edits: undo restores the cut cost before the merge ($(edit 6 cut_cost) = $(edit 4 cut_cost))" \
+  [ "$(edit 6 cut_cost)" = "$(edit 4 cut_cost)" ]
+check "--edits: the sketch has its 3 points" [ "$(edit 7 points)" = 3 ]
+final_patches="$(json_int "$es" segmentation patches)"
+check "--edits: segmentation.patches ($final_patches) = patches after the last edit ($(edit 7 patches))" \
+  [ "$final_patches" = "$(edit 7 patches)" ]
+check "--edits: the patch files are the edited result (vertex ids cover [0, $final_patches))" \
+  ids_cover "$work/edits/vertex_patches.txt" "$final_patches"
+check "--edits: a progress line per edit on stderr" [ "$(grep -c '^edit .*edits.txt:[0-9]*: ' "$work/edits.err")" -eq 5 ]
+# A face of the file is all the triangles it became: the box's quads 0 and 4 are 4
+# triangles; a region of only one patch's faces leaves a merge without effect.
+printf 'refine faces 0 4  0.5\nmerge faces 2\nundo\nundo\n' > "$work/box_edits.txt"
+run box_edits "$work/box.off" --output-dir "$work/box_edits" --edits "$work/box_edits.txt" --quiet
+check "box --edits: exit status 0 (stderr: $(tail -n 1 "$work/box_edits.err"))" [ "$rc" -eq 0 ]
+es="$work/box_edits/summary.json"
+check "box --edits: 'faces 0 4' is 4 triangles" [ "$(edit 1 faces)" = 4 ]
+check "box --edits: 'faces 2' is 2 triangles" [ "$(edit 2 faces)" = 2 ]
+check "box --edits: the two undos take back lines 2 then 1" \
+  [ "$(edit 3 undone_line) $(edit 4 undone_line)" = "2 1" ]
+check "box --edits: back to the automatic patches after undoing everything" \
+  [ "$(edit 4 patches)" = "$(json_int "$es" segmentation automatic_patches)" ]
+
 # ---- bad input ----------------------------------------------------------------------------
 bad="$work/bad"
 mkdir -p "$bad/a_directory.off"
@@ -424,6 +508,22 @@ head -c 4096 /dev/urandom > "$bad/garbage.ply"
 head -c 4096 /dev/urandom > "$bad/garbage.stl"
 echo "not a mesh" > "$bad/mesh.xyz"
 echo "not a mesh" > "$bad/no_extension"
+# Edit scripts with one mistake each, after valid lines where the line number matters.
+printf 'alpha 0.8\nfrob 1\n' > "$bad/verb.edits"
+printf '# a comment\n\nalpha 1 2\n' > "$bad/arity.edits"
+printf 'refine ball 0 0 0 0.3\n' > "$bad/ball_arity.edits"
+printf 'refine ball 0 0 zero 0.3 0.5\n' > "$bad/number.edits"
+printf 'alpha 0.8\nalpha inf\n' > "$bad/infinite.edits"
+printf 'scale ball 0 0 0 0.1 nan\n' > "$bad/nan.edits"
+printf 'merge ball 0 0 0 0\n' > "$bad/radius.edits"
+printf 'merge ball 0 0 0 -1\n' > "$bad/radius_negative.edits"
+printf 'merge faces 0 12946\n' > "$bad/face_range.edits"
+printf 'merge faces 0 -1\n' > "$bad/face_negative.edits"
+printf 'merge sphere 0 0 0 1\n' > "$bad/region.edits"
+printf 'scale faces 1 2 -1.5\n' > "$bad/factor.edits"
+printf 'sketch 0 0 0 1 1\n' > "$bad/sketch_arity.edits"
+printf 'sketch alpha 1 0 0 0 1 1 1\n' > "$bad/sketch_alpha.edits"
+printf 'alpha 1\nundo\nundo # one too many\n' > "$bad/undo.edits"
 echo "5 0 0 0 1 1 1" > "$bad/not_edges.polylines.txt"
 
 # expect_error NAME STATUS PATTERN ARGS...: the program must exit with STATUS, and its
@@ -496,6 +596,25 @@ expect_error solver_unknown         2 "--solver must be .*'foo'"    "$fandisk" -
 expect_error solver_empty           2 '--solver must be'            "$fandisk" --solver=
 expect_error feature_edges_missing  1 'no such file'                "$fandisk" --feature-edges "$bad/missing.txt"
 expect_error feature_edges_bad      1 'not a vertex of the mesh'    "$fandisk" --feature-edges "$bad/not_edges.polylines.txt"
+expect_error edits_missing          1 'missing\.edits: no such file'  "$fandisk" --edits "$bad/missing.edits"
+expect_error edits_verb             1 "verb\.edits:2: unknown verb 'frob'" "$fandisk" --edits "$bad/verb.edits"
+expect_error edits_arity            1 'arity\.edits:3: alpha: wrong number of arguments' "$fandisk" --edits "$bad/arity.edits"
+expect_error edits_ball_arity       1 "ball_arity\.edits:1: refine: a ball is 'ball X Y Z R'" "$fandisk" --edits "$bad/ball_arity.edits"
+expect_error edits_number           1 "number\.edits:1: ball: 'zero' is not a number" "$fandisk" --edits "$bad/number.edits"
+expect_error edits_infinite         1 "infinite\.edits:2: alpha: 'inf' is not a finite number" "$fandisk" --edits "$bad/infinite.edits"
+expect_error edits_nan              1 "nan\.edits:1: scale: 'nan' is not a finite number" "$fandisk" --edits "$bad/nan.edits"
+expect_error edits_radius           1 'radius\.edits:1: ball: the radius must be > 0' "$fandisk" --edits "$bad/radius.edits"
+expect_error edits_radius_negative  1 'radius_negative\.edits:1: ball: the radius must be > 0' "$fandisk" --edits "$bad/radius_negative.edits"
+expect_error edits_face_range       1 'face_range\.edits:1: faces: face index 12946 is out of range \(the mesh file has 12946 faces\)' "$fandisk" --edits "$bad/face_range.edits"
+expect_error edits_face_negative    1 "face_negative\.edits:1: faces: '-1' is not a face index" "$fandisk" --edits "$bad/face_negative.edits"
+expect_error edits_region           1 "region\.edits:1: merge: expected a region" "$fandisk" --edits "$bad/region.edits"
+expect_error edits_factor           1 'factor\.edits:1: scale: the factor must be >= 0' "$fandisk" --edits "$bad/factor.edits"
+expect_error edits_sketch_arity     1 'sketch_arity\.edits:1: sketch: expected at least two points' "$fandisk" --edits "$bad/sketch_arity.edits"
+expect_error edits_sketch_alpha     1 'sketch_alpha\.edits:1: sketch: alpha must be > 1' "$fandisk" --edits "$bad/sketch_alpha.edits"
+expect_error edits_undo             1 'undo\.edits:3: undo: no edit to undo' "$fandisk" --edits "$bad/undo.edits"
+expect_error edits_no_value         2 '--edits expects a value'     "$fandisk" --edits
+expect_error watershed_unknown      2 "--watershed must be anisotropic or geodesic \(got 'foo'\)" "$fandisk" --watershed foo
+expect_error full_graph_value       2 '--full-graph takes no value' "$fandisk" --full-graph=1
 
 echo "script_program: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
