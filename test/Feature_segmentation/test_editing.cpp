@@ -188,6 +188,23 @@ BOOST_AUTO_TEST_CASE(sketch_splits_a_featureless_plane)
   BOOST_CHECK_THROW(seg.add_sketch(sketch, 1.0), FS::Invalid_input);
 }
 
+// The class's boundaries reuse its precomputation and equal those the free function
+// computes from the same labels.
+BOOST_AUTO_TEST_CASE(boundaries_from_the_class)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::Lobed_torus{}.soup(80, 64));
+  Segmentation seg(m, FS::parameters::alpha(1.0));
+  const auto b = seg.patch_boundaries();
+  BOOST_TEST(b.number_of_patches() == 8u);
+  BOOST_TEST(b.curves().size() == 8u); // one closed curve per circle
+  auto vp = m.add_property_map<SM::Vertex_index, std::size_t>("v:p").first;
+  seg.vertex_patches(vp);
+  const auto c = FS::compute_patch_boundaries(m, vp, FS::parameters::alpha(1.0));
+  BOOST_TEST(c.curves().size() == b.curves().size());
+  BOOST_TEST(c.length() == b.length(), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(c.anisotropic_length() == b.anisotropic_length(), boost::test_tools::tolerance(1e-12));
+}
+
 BOOST_AUTO_TEST_CASE(works_on_polyhedron)
 {
   typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;

@@ -11,6 +11,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/Solver_sequence.h>
 #include <CGAL/Feature_segmentation/Watershed_distance.h>
 #include <CGAL/Feature_segmentation/internal/face_patch_rule.h>
@@ -151,6 +152,14 @@ public:
   bool is_feature_edge(edge_descriptor e) const { return m_data.is_feature_edge[m_data.idx.id(e)] != 0; }
   /// The feature lines (detected or given), without the sketches.
   const Feature_lines<TriangleMesh>& feature_lines() const { return m_lines; }
+  /// The boundaries between the current patches as curves on the surface, carrying the
+  /// anisotropic metric of the weights, ready for `smooth_patch_boundaries()` and for the
+  /// per-face patches of `face_patches.h`. Built from this object's precomputation (no
+  /// curvature or feature recomputed); the result must not outlive this object.
+  Patch_boundaries<TriangleMesh> patch_boundaries() const
+  {
+    return internal::make_patch_boundaries(m_data, m_state.labels);
+  }
   /// The number of oversegments (nodes of G').
   std::size_t number_of_oversegments() const { return m_heavy->os.number_of_segments; }
   /// The number of edits that `undo()` can take back.
