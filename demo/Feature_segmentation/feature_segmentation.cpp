@@ -17,6 +17,7 @@
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/Greedy_additive_edge_contraction.h>
+#include <CGAL/Feature_segmentation/IO/write_boundaries.h>
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
 #include <CGAL/Feature_segmentation/IO/write_segmentation.h>
 #include <CGAL/Feature_segmentation/Kernighan_lin_with_joins.h>
@@ -26,6 +27,9 @@
 #include <CGAL/Feature_segmentation/parameters.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/Watershed_distance.h>
+#include <CGAL/Feature_segmentation/boundary_curves.h>
+#include <CGAL/Feature_segmentation/face_patches.h>
+#include <CGAL/Feature_segmentation/smooth_boundaries.h>
 
 #include <CGAL/property_map.h>
 
@@ -57,6 +61,10 @@ namespace FS = CGAL::Feature_segmentation;
 
 const char* const program_name = "feature_segmentation";
 
+// smooth_patch_boundaries()'s default number of iterations, for --help and the summary
+// (the program passes the option to the library only when it is given).
+const int default_smoothing_iterations = 20;
+
 // A wrong command line: reported with exit status 2, as getopt-style programs do.
 class Usage_error : public std::runtime_error
 {
@@ -80,6 +88,7 @@ struct Options
   bool full_graph = false;
   std::string watershed = "anisotropic";
   std::string edits_file;                   // empty: no edits
+  std::optional<int> smoothing_iterations;  // unset: the library's default
   bool quiet = false;
   bool help = false;
 };
@@ -96,9 +105,15 @@ void print_usage(std::ostream& os)
      << "                                   and a red, green, blue colour per face\n"
      << "  DIR/face_patches.txt             the patch of every face of MESH, one per line\n"
      << "  DIR/vertex_patches.txt           the patch of every vertex of MESH, one per line\n"
+     << "  DIR/boundaries.polylines.txt     the boundaries between the patches, smoothed:\n"
+     << "                                   CGAL polylines, one curve per line of text\n"
+     << "  DIR/segmentation_refined.ply     the mesh refined along the smoothed boundaries,\n"
+     << "                                   every face in one patch (patch_id and colour)\n"
      << "  DIR/summary.json                 mesh and feature counts, patches, cut cost,\n"
      << "                                   oversegments, seconds per stage, and for each\n"
-     << "                                   edit of --edits its patches, cut cost, seconds\n"
+     << "                                   edit of --edits its patches, cut cost, seconds;\n"
+     << "                                   boundary curves and lengths before and after\n"
+     << "                                   the smoothing\n"
      << "\n"
      << "MESH is an .off, .obj, .ply or .stl file (default: " << FS_MESH_DIR << "/fandisk.off).\n"
      << "Quads and polygons are triangulated, duplicate points and faces removed, with a\n"
@@ -113,6 +128,13 @@ void print_usage(std::ostream& os)
      << "into copies to repair it, has the patch of the copy in the first face (in file\n"
      << "order) that uses it; a vertex that no face uses has -1. For STL, the vertices are\n"
      << "the distinct points in order of first appearance.\n"
+     << "\n"
+     << "The boundaries are the curves between the patches of the vertices (through the\n"
+     << "triangles whose vertices lie in different patches), smoothed in the metric of the\n"
+     << "edge weights so that they settle on the features and straighten elsewhere; the\n"
+     << "smoothing may move a vertex next to a boundary to the neighbouring patch, which\n"
+     << "segmentation_refined.ply shows (its vertices are the mesh's, then the new ones).\n"
+     << "The patch files and segmentation.ply keep the clustering's patches.\n"
      << "\n"
      << "Options:\n"
      << "  --output-dir DIR          output folder, created if needed\n"
@@ -136,7 +158,12 @@ void print_usage(std::ostream& os)
      << "                            (the paper's) or geodesic (default: anisotropic)\n"
      << "  --edits FILE              apply the edit script FILE (below) after the automatic\n"
      << "                            segmentation; the patch outputs are the edited result\n"
-     << "  --quiet                   no progress or notice lines on stderr\n"
+     << "  --smoothing-iterations N  iterations of the boundary smoothing, integer >= 0; 0\n"
+     << "                            writes the boundaries unsmoothed (default: "
+     << default_smoothing_iterations << ")\n"
+     << "  --quiet                   no progress or notice lines on stderr (by default every\n"
+     << "                            stage prints 'progress: STAGE ...' when it starts and\n"
+     << "                            'progress: STAGE done in X s' when it ends)\n"
      << "  --help                    print this help and exit\n"
      << "\n"
      << "Edit scripts (--edits FILE): one edit per line, applied in order; '#' starts a\n"
@@ -284,6 +311,13 @@ Options parse_command_line(int argc, char** argv)
         throw Usage_error("--solver must be gaec+klj, gaec or klj (got '" + options.solver + "')");
     }
     else if(arg == "--full-graph") { refuse_value(); options.full_graph = true; }
+    else if(arg == "--smoothing-iterations")
+    {
+      const int n = parse_int(arg, take_value());
+      if(n < 0)
+        throw Usage_error("--smoothing-iterations must be an integer >= 0 (got " + std::to_string(n) + ")");
+      options.smoothing_iterations = n;
+    }
     else if(arg == "--watershed")
     {
       options.watershed = take_value();
@@ -324,13 +358,13 @@ public:
   auto run(const std::string& name, F&& f)
   {
     if(!m_quiet)
-      std::cerr << "[" << name << "] ..." << std::endl;
+      std::cerr << "progress: " << name << " ..." << std::endl;
     const auto start = std::chrono::steady_clock::now();
     auto finish = [&]() {
       const std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
       m_seconds.emplace_back(name, d.count());
       if(!m_quiet)
-        std::cerr << "[" << name << "] done in " << std::fixed << std::setprecision(3)
+        std::cerr << "progress: " << name << " done in " << std::fixed << std::setprecision(3)
                   << d.count() << " s" << std::defaultfloat << std::endl;
     };
     if constexpr(std::is_void_v<decltype(f())>)
@@ -446,6 +480,17 @@ struct Results
   std::size_t number_of_oversegments = 0;
   double solver_seconds = 0;               // of the automatic segmentation
   std::vector<fs_demo::Edit_record> edits;
+  // The boundaries and their smoothing.
+  std::size_t number_of_curves = 0;
+  std::size_t number_of_junctions = 0;
+  std::size_t smoothing_iterations_run = 0;
+  std::size_t smoothing_vertex_moves = 0;
+  double length_before = 0, length_after = 0;
+  double anisotropic_length_before = 0, anisotropic_length_after = 0;
+  double smoothing_seconds = 0;
+  std::size_t number_of_refined_vertices = 0;
+  std::size_t number_of_refined_faces = 0;
+  std::size_t number_of_split_faces = 0;
 };
 
 void write_summary(std::ostream& os, const Options& options, const Results& r,
@@ -470,6 +515,8 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "    \"watershed\": " << json_string(options.watershed) << ",\n"
      << "    \"edits_file\": "
      << (options.edits_file.empty() ? std::string("null") : json_string(options.edits_file)) << ",\n"
+     << "    \"smoothing_iterations\": "
+     << (options.smoothing_iterations ? *options.smoothing_iterations : default_smoothing_iterations) << ",\n"
      << "    \"solver\": " << json_string(options.solver) << "\n"
      << "  },\n"
      << "  \"input_file\": {\n"
@@ -520,6 +567,20 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
        << ", \"prepare_seconds\": " << json_number(e.prepare_seconds, 6) << "}";
   }
   os << (r.edits.empty() ? "],\n" : "\n  ],\n")
+     << "  \"boundaries\": {\n"
+     << "    \"curves\": " << r.number_of_curves << ",\n"
+     << "    \"junctions\": " << r.number_of_junctions << ",\n"
+     << "    \"length_before\": " << json_number(r.length_before) << ",\n"
+     << "    \"length_after\": " << json_number(r.length_after) << ",\n"
+     << "    \"anisotropic_length_before\": " << json_number(r.anisotropic_length_before) << ",\n"
+     << "    \"anisotropic_length_after\": " << json_number(r.anisotropic_length_after) << ",\n"
+     << "    \"smoothing_iterations\": " << r.smoothing_iterations_run << ",\n"
+     << "    \"vertex_moves\": " << r.smoothing_vertex_moves << ",\n"
+     << "    \"smoothing_seconds\": " << json_number(r.smoothing_seconds, 6) << ",\n"
+     << "    \"refined_vertices\": " << r.number_of_refined_vertices << ",\n"
+     << "    \"refined_faces\": " << r.number_of_refined_faces << ",\n"
+     << "    \"split_faces\": " << r.number_of_split_faces << "\n"
+     << "  },\n"
      << "  \"seconds\": {\n";
   double total = 0;
   for(const auto& s : seconds)
@@ -671,6 +732,47 @@ int run(const Options& options)
   for(Mesh::Face_index f : correspondence.face_of_file_face)
     file_face_patch.push_back(get(face_patch, f));
 
+  // The boundaries of the final patches, in the metric of the weights. The features are
+  // the lines and the sketches (whose edges the segmentation knows).
+  auto edge_is_any_feature =
+    mesh.add_property_map<Mesh::Edge_index, bool>("e:fs_is_any_feature", false).first;
+  for(Mesh::Edge_index e : edges(mesh))
+    put(edge_is_any_feature, e, segmentation->is_feature_edge(e));
+  FS::Patch_boundaries<Mesh> boundaries = timer.run("boundaries", [&]() {
+    return FS::compute_patch_boundaries(mesh, vertex_patch,
+                                        FS::parameters::gamma(options.gamma)
+                                          .principal_curvature_map(curvature_map)
+                                          .feature_lines(std::cref(lines))
+                                          .edge_is_feature_map(edge_is_any_feature));
+  });
+  results.number_of_curves = boundaries.curves().size();
+  results.number_of_junctions = boundaries.number_of_junctions();
+  results.length_before = boundaries.length();
+  results.anisotropic_length_before = boundaries.anisotropic_length();
+  const FS::Boundary_smoothing_report smoothing = timer.run("smoothing", [&]() {
+    return options.smoothing_iterations
+             ? FS::smooth_patch_boundaries(
+                 boundaries, FS::parameters::smoothing_iterations(*options.smoothing_iterations))
+             : FS::smooth_patch_boundaries(boundaries);
+  });
+  results.smoothing_seconds = timer.seconds().back().second;
+  results.smoothing_iterations_run = smoothing.number_of_iterations;
+  results.smoothing_vertex_moves = smoothing.number_of_vertex_moves;
+  results.length_after = boundaries.length();
+  results.anisotropic_length_after = boundaries.anisotropic_length();
+  if(!options.quiet)
+    std::cerr << "boundaries: " << results.number_of_curves << " curves, length "
+              << results.length_before << " -> " << results.length_after << " ("
+              << results.smoothing_iterations_run << " smoothing iterations)" << std::endl;
+
+  Mesh refined;
+  auto refined_patch = refined.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
+  results.number_of_split_faces = timer.run("refinement", [&]() {
+    return FS::refine_mesh_along_boundaries(boundaries, refined, refined_patch);
+  });
+  results.number_of_refined_vertices = num_vertices(refined);
+  results.number_of_refined_faces = num_faces(refined);
+
   const sfs::path dir(options.output_dir);
   timer.run("write", [&]() {
     write_file(dir / "feature_lines.polylines.txt",
@@ -679,6 +781,10 @@ int run(const Options& options)
                [&](std::ostream& os) { FS::write_OBJ_lines(os, mesh, lines); });
     write_file(dir / "segmentation.ply",
                [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); });
+    write_file(dir / "boundaries.polylines.txt",
+               [&](std::ostream& os) { FS::write_boundary_polylines(os, boundaries); });
+    write_file(dir / "segmentation_refined.ply",
+               [&](std::ostream& os) { FS::write_PLY_segmentation(os, refined, refined_patch); });
     write_file(dir / "face_patches.txt", [&](std::ostream& os) {
       FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file_face_patch.size()),
                           CGAL::make_property_map(file_face_patch));

@@ -102,7 +102,7 @@ out="$work/fandisk"
 run fandisk "$fandisk" --output-dir "$out"
 check "fandisk: exit status 0 (got $rc; stderr: $(tail -n 1 "$work/fandisk.err"))" [ "$rc" -eq 0 ]
 for f in feature_lines.polylines.txt feature_lines.obj summary.json segmentation.ply \
-         face_patches.txt vertex_patches.txt; do
+         face_patches.txt vertex_patches.txt boundaries.polylines.txt segmentation_refined.ply; do
   check "fandisk: $f written" [ -s "$out/$f" ]
 done
 check "fandisk: no error line on stderr" bash -c "! grep -q '^error:' '$work/fandisk.err'"
@@ -187,6 +187,37 @@ check "fandisk: segmentation.ply patch ids = face_patches.txt" \
 check "fandisk: equal patch ids have equal colours in segmentation.ply" \
   awk -v nv="$v" 'p && ++row > nv { c = $6 " " $7 " " $8; if (($5 in col) && col[$5] != c) exit 1; col[$5] = c }
                   /^end_header$/ { p = 1 }' "$out/segmentation.ply"
+# The boundaries: one polyline per curve; the smoothing never raises their anisotropic
+# length (its energy); the refined mesh splits the faces the curves cross, so it has at
+# least the mesh's vertices and faces, every face in a patch of the clustering's range.
+curves="$(json_int "$summary" boundaries curves)"
+check "fandisk: boundaries.curves in summary (${curves:-none}), some for $patches patches" \
+  [ "${curves:-0}" -ge 1 ]
+check "fandisk: boundaries.polylines.txt has one line per curve ($curves)" \
+  [ "$(wc -l < "$out/boundaries.polylines.txt")" -eq "${curves:-0}" ]
+check "fandisk: boundaries.polylines.txt well-formed" polylines_well_formed "$out/boundaries.polylines.txt"
+check "fandisk: smoothing_iterations = 20 (the library's default) in options" \
+  [ "$(json_int "$summary" options smoothing_iterations)" = 20 ]
+check "fandisk: smoothing ran (iterations in [1, 20])" \
+  [ "$(json_int "$summary" boundaries smoothing_iterations)" -ge 1 ] && \
+  [ "$(json_int "$summary" boundaries smoothing_iterations)" -le 20 ]
+check "fandisk: smoothing does not raise the anisotropic length" \
+  awk -v a="$(json_number "$summary" boundaries anisotropic_length_after)" \
+      -v b="$(json_number "$summary" boundaries anisotropic_length_before)" 'BEGIN { exit !(a != "" && a <= b) }'
+check "fandisk: smoothing_seconds and seconds.smoothing in summary" \
+  [ -n "$(json_number "$summary" boundaries smoothing_seconds)" ] && grep -Eq '^    "smoothing": [0-9.e+-]+,$' "$summary"
+refined_v="$(sed -n 's/^element vertex \([0-9]*\)$/\1/p' "$out/segmentation_refined.ply")"
+refined_f="$(sed -n 's/^element face \([0-9]*\)$/\1/p' "$out/segmentation_refined.ply")"
+check "fandisk: segmentation_refined.ply: ${refined_v:-?} >= $v vertices, ${refined_f:-?} >= $f faces" \
+  [ "${refined_v:-0}" -ge "$v" ] && [ "${refined_f:-0}" -ge "$f" ]
+check "fandisk: segmentation_refined.ply well-formed (triangles, patch_id and colour per face)" \
+  ply_header_ok "$out/segmentation_refined.ply" "${refined_v:-0}" "${refined_f:-0}"
+check "fandisk: refined_faces in summary = the refined PLY's faces" \
+  [ "$(json_int "$summary" boundaries refined_faces)" = "$refined_f" ]
+check "fandisk: refined patch ids in [0, $patches)" \
+  ids_in_range <(awk -v nv="$refined_v" 'p && ++row > nv { print $5 } /^end_header$/ { p = 1 }' "$out/segmentation_refined.ply") "$patches"
+check "fandisk: progress lines on stderr" grep -q '^progress: smoothing done in [0-9.]* s$' "$work/fandisk.err"
+
 # CGAL's PLY reader (read_polygon_soup, through the program itself) reads it back: the
 # same mesh, so the same feature lines.
 run ply_back "$out/segmentation.ply" --output-dir "$work/ply_back" --quiet
@@ -202,7 +233,7 @@ run fandisk_again "$fandisk" --output-dir "$work/fandisk_again" --quiet
 check "fandisk again: exit status 0" [ "$rc" -eq 0 ]
 check "fandisk again: --quiet prints nothing on stderr" [ ! -s "$work/fandisk_again.err" ]
 for f in feature_lines.polylines.txt feature_lines.obj segmentation.ply face_patches.txt \
-         vertex_patches.txt; do
+         vertex_patches.txt boundaries.polylines.txt segmentation_refined.ply; do
   check "fandisk: $f identical over two runs" cmp -s "$out/$f" "$work/fandisk_again/$f"
 done
 
@@ -232,6 +263,31 @@ patches_high="$(json_int "$work/alpha_high/summary.json" segmentation patches)"
 check "--alpha 0.4 / 1.0: patches ${patches_low:-none} < ${patches_high:-none}" \
   [ "${patches_low:-0}" -ge 1 ] && [ "${patches_high:-0}" -gt "${patches_low:-0}" ]
 check "--alpha 1.0 recorded in summary" [ "$(json_number "$work/alpha_high/summary.json" options alpha)" = 1 ]
+# One patch has no boundary: no curve, nothing split.
+if [ "${patches_low:-0}" -eq 1 ]; then
+  check "--alpha 0.4: one patch, no boundary curve" \
+    [ "$(json_int "$work/alpha_low/summary.json" boundaries curves)" = 0 ] && [ ! -s "$work/alpha_low/boundaries.polylines.txt" ]
+  check "--alpha 0.4: one patch, the refined mesh is the mesh ($header_faces faces)" \
+    [ "$(json_int "$work/alpha_low/summary.json" boundaries refined_faces)" = "$header_faces" ]
+fi
+# No smoothing: the curves as computed, so the same lengths before and after.
+run unsmoothed "$fandisk" --output-dir "$work/unsmoothed" --smoothing-iterations 0 --quiet
+us="$work/unsmoothed/summary.json"
+check "--smoothing-iterations 0: exit status 0 (stderr: $(tail -n 1 "$work/unsmoothed.err"))" [ "$rc" -eq 0 ]
+check "--smoothing-iterations 0: recorded in options, no iteration run" \
+  [ "$(json_int "$us" options smoothing_iterations)" = 0 ] && [ "$(json_int "$us" boundaries smoothing_iterations)" = 0 ]
+check "--smoothing-iterations 0: the same $curves curves" [ "$(json_int "$us" boundaries curves)" = "$curves" ] && \
+  [ "$(wc -l < "$work/unsmoothed/boundaries.polylines.txt")" -eq "${curves:-0}" ]
+check "--smoothing-iterations 0: length before = after ($(json_number "$us" boundaries length_before))" \
+  [ -n "$(json_number "$us" boundaries length_before)" ] && \
+  [ "$(json_number "$us" boundaries length_before)" = "$(json_number "$us" boundaries length_after)" ] && \
+  [ "$(json_number "$us" boundaries anisotropic_length_before)" = "$(json_number "$us" boundaries anisotropic_length_after)" ]
+check "--smoothing-iterations 0: the lengths before are those of the smoothed run" \
+  [ "$(json_number "$us" boundaries length_before)" = "$(json_number "$summary" boundaries length_before)" ]
+check "--smoothing-iterations 0: the curves differ from the smoothed ones" \
+  bash -c "! cmp -s '$work/unsmoothed/boundaries.polylines.txt' '$out/boundaries.polylines.txt'"
+check "--smoothing-iterations 0: refined faces >= $header_faces" \
+  [ "$(json_int "$us" boundaries refined_faces)" -ge "$header_faces" ]
 run gamma "$fandisk" --output-dir "$work/gamma" --gamma 0 --quiet
 check "--gamma 0: exit status 0" [ "$rc" -eq 0 ]
 check "--gamma 0 recorded in summary" [ "$(json_number "$work/gamma/summary.json" options gamma)" = 0 ]
@@ -615,6 +671,8 @@ expect_error edits_undo             1 'undo\.edits:3: undo: no edit to undo' "$f
 expect_error edits_no_value         2 '--edits expects a value'     "$fandisk" --edits
 expect_error watershed_unknown      2 "--watershed must be anisotropic or geodesic \(got 'foo'\)" "$fandisk" --watershed foo
 expect_error full_graph_value       2 '--full-graph takes no value' "$fandisk" --full-graph=1
+expect_error smoothing_negative     2 '--smoothing-iterations must be an integer >= 0' "$fandisk" --smoothing-iterations -1
+expect_error smoothing_text         2 '--smoothing-iterations expects an integer' "$fandisk" --smoothing-iterations many
 
 echo "script_program: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
