@@ -732,19 +732,10 @@ int run(const Options& options)
   for(Mesh::Face_index f : correspondence.face_of_file_face)
     file_face_patch.push_back(get(face_patch, f));
 
-  // The boundaries of the final patches, in the metric of the weights. The features are
-  // the lines and the sketches (whose edges the segmentation knows).
-  auto edge_is_any_feature =
-    mesh.add_property_map<Mesh::Edge_index, bool>("e:fs_is_any_feature", false).first;
-  for(Mesh::Edge_index e : edges(mesh))
-    put(edge_is_any_feature, e, segmentation->is_feature_edge(e));
-  FS::Patch_boundaries<Mesh> boundaries = timer.run("boundaries", [&]() {
-    return FS::compute_patch_boundaries(mesh, vertex_patch,
-                                        FS::parameters::gamma(options.gamma)
-                                          .principal_curvature_map(curvature_map)
-                                          .feature_lines(std::cref(lines))
-                                          .edge_is_feature_map(edge_is_any_feature));
-  });
+  // The boundaries of the final patches, in the metric of the weights, from the
+  // segmentation's own precomputation (which knows the sketches' feature points).
+  FS::Patch_boundaries<Mesh> boundaries =
+    timer.run("boundaries", [&]() { return segmentation->patch_boundaries(); });
   results.number_of_curves = boundaries.curves().size();
   results.number_of_junctions = boundaries.number_of_junctions();
   results.length_before = boundaries.length();
