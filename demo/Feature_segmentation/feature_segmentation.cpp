@@ -185,10 +185,11 @@ void print_usage(std::ostream& os)
      << "'faces I J ...' (faces of MESH numbered from 0 in file order, as in\n"
      << "face_patches.txt; a triangulated polygon stands for all its triangles). A region\n"
      << "without faces, or a merge inside one patch, changes nothing. A mistake in the\n"
-     << "script gives 'error: FILE:LINE: reason' and exit status 1 before the segmentation\n"
-     << "runs or anything is written. summary.json lists every edit (\"edits\"): its line, verb,\n"
-     << "the patches and cut cost after it, and its seconds (the library's re-weighting and\n"
-     << "re-solve; the region search or point location apart, as prepare_seconds).\n";
+     << "script gives 'error: FILE:LINE: reason' and exit status 1 before the\n"
+     << "segmentation runs or anything is written. summary.json lists every edit\n"
+     << "(\"edits\"): its line, verb, the patches and cut cost after it, and its seconds\n"
+     << "(the library's re-weighting and re-solve; finding the region's faces or locating\n"
+     << "the sketch's points apart, as prepare_seconds).\n";
 }
 
 // Strict number parsing: the whole argument must be the number ("1.5x", "", "abc",
