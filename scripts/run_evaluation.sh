@@ -3,7 +3,8 @@
 # evaluation program and the contact-sheet renderer, evaluates fandisk, the paper's
 # models and the ground-truth models (ABC format), and writes
 #   OUT/table.md, OUT/table.csv, OUT/robustness.csv   the tables
-#   OUT/contact_sheets/MODEL.png                       feature lines and every method's patches
+#   OUT/contact_sheets/MODEL.png                       feature lines and every method's patches (a row
+#                                                      per CC variant: default, smoothed, best, smoothed)
 #   OUT/tiles/                                         the pictures' parts (OUT/scenes/, the renderer's
 #                                                      input, is kept with FS_KEEP_SCENES=1)
 # Usage: scripts/run_evaluation.sh [OUT]   (default: out/evaluation)
@@ -56,7 +57,7 @@ for scene in "$out"/scenes/*.scene; do
   while IFS=$'\t' read -r png label; do
     args+=(-label "$label" "$png")
   done < <("$build/evaluation-render/render_scenes" "$scene" "$out/tiles/$model" "$tile")
-  montage -font "$font" -pointsize 13 "${args[@]}" -tile 3x -geometry +6+6 \
+  montage -font "$font" -pointsize 13 "${args[@]}" -tile 4x -geometry +6+6 \
           -title "$model" "$out/contact_sheets/$model.png"
   echo "run_evaluation: $out/contact_sheets/$model.png"
 done

@@ -16,11 +16,20 @@
 // Each parametrised method gets a "default" row (alpha 0.6; angle 90 as in CGAL's
 // example) and a "best" row from a sweep, chosen by the boundary F-score when a ground
 // truth exists, else by the harmonic mean of coverage and (1 - redundancy fraction).
+// Each correlation-clustering variant gets two more rows "with smoothing", at the same
+// two alphas: the boundaries smoothed (smooth_patch_boundaries(), 20 iterations at most),
+// every face scored with the patch covering most of its area (majority_face_patches());
+// with a ground truth, the boundary precision/recall/F-score of the smoothed curves
+// themselves too (the "curve" columns). Without smoothing, a face has the patch of the
+// majority of its vertices (segment_along_features()'s face_patch_map).
 // VSA is given the ground-truth patch count, or without a ground truth the patch count of
 // the default segmentation.
 //
 // Writes OUT/table.md, OUT/table.csv, OUT/robustness.csv and OUT/scenes/MODEL.scene (the
-// input of render_scenes, which draws the contact sheets).
+// input of render_scenes, which draws the contact sheets: four tiles a row, the feature
+// lines and the ground truth, then one row per CC variant (default, default with
+// smoothing, best, best with smoothing; smoothed tiles draw the smoothed curves), then the
+// CGAL baselines).
 //
 // Usage: evaluate_quality [--data DIR] [--out DIR] [--only NAME[,NAME...]] [--no-robustness]
 //   DIR (default $FEATURE_SEGMENTATION_DATA): holds paper-models/ and abc/ (ground truth);
@@ -69,6 +78,7 @@ struct Model
 struct Row
 {
   std::string model, method, setting, role; // role: default, best, given-count, ground truth
+  bool smoothed = false;
   std::size_t faces = 0;
   Scores scores;
   double seconds = 0;
@@ -141,7 +151,10 @@ public:
   }
   bool good() const { return m_os.good(); }
 
-  void tile_with_patches(const std::string& label, const std::vector<std::size_t>& face_patch)
+  // Patches as face colours; with `curves`, the curves are drawn instead of the edges
+  // between faces of different colours.
+  void tile_with_patches(const std::string& label, const std::vector<std::size_t>& face_patch,
+                         const Boundaries* curves = nullptr)
   {
     m_os << "tile " << label << "\ncolours\n";
     char buf[8];
@@ -151,8 +164,27 @@ public:
       std::snprintf(buf, sizeof(buf), "%02x%02x%02x", c.red(), c.green(), c.blue());
       m_os << buf << ((f % 16 == 15) ? "\n" : " ");
     }
-    m_os << "\nsegments 0\n";
+    m_os << "\n";
+    if(curves == nullptr)
+    {
+      m_os << "segments 0\n";
+      return;
+    }
+    std::vector<std::pair<const std::array<double, 3>*, const std::array<double, 3>*> > segments;
+    for(const auto& c : curves->curves())
+    {
+      const std::size_t n = c.points.size();
+      const std::size_t m = c.is_closed() ? (n > 1 ? n : 0) : (n > 0 ? n - 1 : 0);
+      for(std::size_t i = 0; i < m; ++i) segments.emplace_back(&c.points[i].point, &c.points[(i + 1) % n].point);
+    }
+    m_os << "face_boundaries 0\nsegments " << segments.size() << "\n";
+    for(const auto& sg : segments)
+      m_os << (*sg.first)[0] << " " << (*sg.first)[1] << " " << (*sg.first)[2] << " " << (*sg.second)[0] << " "
+           << (*sg.second)[1] << " " << (*sg.second)[2] << " 141414 2\n";
   }
+
+  // An empty place in the sheet, so that each CC variant keeps its own row.
+  void blank_tile() { m_os << "blank\n"; }
 
   // Feature lines over a grey surface: strong ridges red, strong valleys blue, weaker
   // lines thinner and lighter.
@@ -197,11 +229,16 @@ bool read_model(const Model& model, Mesh& mesh, std::string& error)
   return true;
 }
 
+// Two lines (montage reads the two characters \n as a line break): the method and its
+// setting, then the scores.
 std::string tile_label(const Row& r)
 {
-  std::string s = r.method + " (" + r.setting + (r.role.empty() ? "" : ", " + r.role) + "): " +
-                  std::to_string(r.scores.patches) + " patches";
-  if(r.scores.has_ground_truth)
+  std::string s = r.method + ", " + r.setting + (r.role.empty() ? "" : " (" + r.role + ")") +
+                  (r.smoothed ? ", smoothed" : "") + "\\n" + std::to_string(r.scores.patches) + " patches";
+  if(r.scores.has_curve_scores)
+    s += ", F " + fmt(r.scores.boundary.f_score, 2) + " (curves " + fmt(r.scores.curve_boundary.f_score, 2) +
+         "), RI " + fmt(r.scores.partition.rand_index, 3);
+  else if(r.scores.has_ground_truth)
     s += ", F " + fmt(r.scores.boundary.f_score, 2) + ", RI " + fmt(r.scores.partition.rand_index, 3);
   else
     s += ", cov " + fmt(r.scores.lines.coverage, 2) + ", red " + fmt(r.scores.lines.redundancy_fraction(), 2);
@@ -239,7 +276,9 @@ void evaluate(const Model& model, const Options& opt, std::vector<Row>& rows, st
   std::cerr << "evaluate_quality: " << model.name << " (" << mesh.number_of_faces() << " faces)" << std::endl;
   const Prepared_mesh pm(mesh);
 
-  std::vector<std::pair<Row, Segmentation> > shown; // rows drawn in the contact sheet
+  // The contact sheet's tiles after the header row, four a row; an empty row is a blank tile.
+  std::vector<std::pair<Row, Segmentation> > shown;
+  auto blank = [&]() { shown.emplace_back(Row(), Segmentation()); };
   auto add = [&](const Segmentation& s, const std::string& role, bool show) {
     Row r;
     r.model = model.name;
@@ -247,29 +286,29 @@ void evaluate(const Model& model, const Options& opt, std::vector<Row>& rows, st
     r.method = s.method;
     r.setting = s.setting;
     r.role = role;
+    r.smoothed = s.is_smoothed();
     r.seconds = s.seconds;
     r.scores = score(pm, s, gt, model.has_ground_truth ? &sharp : nullptr);
     rows.push_back(r);
     if(show) shown.emplace_back(r, s);
     return r;
   };
-  auto sweep = [&](const std::vector<Segmentation>& runs, std::size_t default_index, bool show) {
+  auto best_of = [&](const std::vector<Segmentation>& runs) {
     std::size_t best = 0;
     double best_score = -1;
-    std::vector<Scores> sc;
-    for(const auto& s : runs) sc.push_back(score(pm, s, gt, model.has_ground_truth ? &sharp : nullptr));
     for(std::size_t i = 0; i < runs.size(); ++i)
-      if(selection_score(sc[i]) > best_score + 1e-12) { best = i; best_score = selection_score(sc[i]); }
-    add(runs[default_index], "default", show);
-    add(runs[best], "best", show && best != default_index);
+    {
+      const double x = selection_score(score(pm, runs[i], gt, model.has_ground_truth ? &sharp : nullptr));
+      if(x > best_score + 1e-12) { best = i; best_score = x; }
+    }
     return best;
   };
 
-  // This package, three variants, alpha swept.
+  // This package, three variants, alpha swept; the default and the best alpha also with
+  // smoothing. A row of the sheet per variant: default, default smoothed, best, best smoothed.
   std::size_t default_patches = 0;
   std::vector<std::size_t> default_labels;
   Cc_variant variants[3] = {Cc_variant::ANISOTROPIC_WATERSHED, Cc_variant::GEODESIC_WATERSHED, Cc_variant::FULL_GRAPH};
-  std::map<int, double> best_alpha;
   for(Cc_variant v : variants)
   {
     std::vector<Segmentation> runs;
@@ -279,8 +318,19 @@ void evaluate(const Model& model, const Options& opt, std::vector<Row>& rows, st
       if(std::abs(a - default_alpha) < 1e-9) def = runs.size();
       runs.push_back(run_cc(pm, v, a));
     }
-    const std::size_t best = sweep(runs, def, true);
-    best_alpha[static_cast<int>(v)] = alpha_sweep()[best];
+    const std::size_t best = best_of(runs);
+    const Segmentation smoothed_default = smooth_cc(pm, runs[def]);
+    const bool same = best == def;
+    add(runs[def], "default", true);
+    add(smoothed_default, "default", true);
+    add(runs[best], "best", !same);
+    add(same ? smoothed_default : smooth_cc(pm, runs[best]), "best", !same);
+    if(same)
+    {
+      for(std::size_t i = shown.size() - 2; i < shown.size(); ++i) shown[i].first.role = "default and best";
+      blank();
+      blank();
+    }
     if(v == Cc_variant::ANISOTROPIC_WATERSHED)
     {
       default_labels = runs[def].face_patch;
@@ -297,7 +347,10 @@ void evaluate(const Model& model, const Options& opt, std::vector<Row>& rows, st
     if(std::abs(a - default_sharp_angle) < 1e-9) pmp_def = pmp_runs.size();
     pmp_runs.push_back(run_sharp_edges(mesh, a));
   }
-  const double best_angle = angle_sweep()[sweep(pmp_runs, pmp_def, true)];
+  const std::size_t pmp_best = best_of(pmp_runs);
+  const double best_angle = angle_sweep()[pmp_best];
+  add(pmp_runs[pmp_def], "default", true);
+  add(pmp_runs[pmp_best], "best", pmp_best != pmp_def);
 
   // VSA with the ground-truth count (else the default segmentation's count).
   const std::size_t k = model.has_ground_truth ? truth.number_of_patches() : (std::max<std::size_t>)(default_patches, 2);
@@ -319,8 +372,19 @@ void evaluate(const Model& model, const Options& opt, std::vector<Row>& rows, st
     scene.tile_with_lines("ground-truth sharp curves (" + std::to_string(sharp.lines.size()) + ")", sharp);
     scene.tile_with_patches("ground truth: " + std::to_string(truth.number_of_patches()) + " patches", reference);
   }
+  else
+  {
+    scene.blank_tile();
+    scene.blank_tile();
+  }
   for(const auto& rs : shown)
-    scene.tile_with_patches(tile_label(rs.first), match_to_reference(rs.second.face_patch, reference, pm.face_area));
+  {
+    if(rs.first.method.empty())
+      scene.blank_tile();
+    else
+      scene.tile_with_patches(tile_label(rs.first), match_to_reference(rs.second.face_patch, reference, pm.face_area),
+                              rs.second.curves.get());
+  }
   if(!scene.good()) std::cerr << "evaluate_quality: cannot write the scene of " << model.name << std::endl;
 
   if(!opt.robustness) return;
@@ -360,6 +424,12 @@ void evaluate(const Model& model, const Options& opt, std::vector<Row>& rows, st
   robust.insert(robust.end(), out.begin(), out.end());
 }
 
+// "alpha 0.6, smoothed (default)"
+std::string setting_text(const Row& r)
+{
+  return r.setting + (r.smoothed ? ", smoothed" : "") + (r.role.empty() ? "" : " (" + r.role + ")");
+}
+
 void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::vector<Robust_row>& robust,
                    const std::string& machine)
 {
@@ -367,7 +437,8 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
   {
     std::ofstream csv(out / "table.csv");
     csv << "model,faces,method,setting,role,patches,cut_cost,coverage,redundant_length,redundancy_fraction,"
-           "precision,recall,f_score,rand_index,over_segmentation,under_segmentation,sharp_curve_recall,seconds\n";
+           "precision,recall,f_score,rand_index,over_segmentation,under_segmentation,sharp_curve_recall,seconds,"
+           "smoothed,curve_precision,curve_recall,curve_f_score\n";
     for(const Row& r : rows)
     {
       const Scores& s = r.scores;
@@ -380,7 +451,12 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
             << "," << s.sharp_curve_recall;
       else
         csv << ",,,,,,";
-      csv << "," << r.seconds << "\n";
+      csv << "," << r.seconds << "," << (r.smoothed ? 1 : 0) << ",";
+      if(s.has_curve_scores)
+        csv << s.curve_boundary.precision << "," << s.curve_boundary.recall << "," << s.curve_boundary.f_score;
+      else
+        csv << ",,";
+      csv << "\n";
     }
   }
   {
@@ -396,19 +472,30 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
      << "(`evaluate_quality`); tolerance 1% of the bounding-box diagonal; cut cost with the reference weights "
      << "(alpha 0.6, pruned lines; lower is better); \"default\": alpha 0.6, angle 90 (CGAL's example); \"best\": "
      << "the best of the sweep (alpha 0.4-1.2, angle 10-90) by boundary F-score with a ground truth, else by the "
-     << "harmonic mean of coverage and 1 - redundancy.\n\n";
+     << "harmonic mean of coverage and 1 - redundancy. \"smoothed\": the same segmentation with its boundaries "
+     << "smoothed (smooth_patch_boundaries, 20 iterations at most) and every face given the patch covering most of "
+     << "its area (majority_face_patches); without it, a face has the patch of the majority of its vertices. Every "
+     << "score is computed on the face patches (the boundary is the chain of mesh edges between faces of different "
+     << "patches), except the cut cost (on the vertex patches) and the curve columns: precision, recall and F-score "
+     << "of the smoothed curves themselves.\n\n";
   md << "## Against the ground truth\n\n"
      << "| model | method | setting | patches | boundary P | boundary R | boundary F | Rand index | over | under | "
-        "sharp-curve recall | cut cost |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "sharp-curve recall | cut cost | curve P | curve R | curve F |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
     if(r.scores.has_ground_truth)
     {
       const Scores& s = r.scores;
-      md << "| " << r.model << " | " << r.method << " | " << r.setting << (r.role.empty() ? "" : " (" + r.role + ")")
+      md << "| " << r.model << " | " << r.method << " | " << setting_text(r)
          << " | " << s.patches << " | " << fmt(s.boundary.precision) << " | " << fmt(s.boundary.recall) << " | **"
          << fmt(s.boundary.f_score) << "** | **" << fmt(s.partition.rand_index) << "** | "
          << s.partition.over_segmentation << " | " << s.partition.under_segmentation << " | "
-         << fmt(s.sharp_curve_recall) << " | " << fmt(s.cut_cost, 2) << " |\n";
+         << fmt(s.sharp_curve_recall) << " | " << fmt(s.cut_cost, 2) << " | ";
+      if(s.has_curve_scores)
+        md << fmt(s.curve_boundary.precision) << " | " << fmt(s.curve_boundary.recall) << " | **"
+           << fmt(s.curve_boundary.f_score) << "** |\n";
+      else
+        md << "- | - | - |\n";
     }
   md << "\n## Against the feature lines (every model, no ground truth needed)\n\n"
      << "Coverage: share of the strong feature-line length (strength >= 10) within the tolerance of a patch "
@@ -416,8 +503,7 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
      << "| model | faces | method | setting | patches | coverage | redundancy | cut cost | seconds |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
-    md << "| " << r.model << " | " << r.faces << " | " << r.method << " | " << r.setting
-       << (r.role.empty() ? "" : " (" + r.role + ")") << " | " << r.scores.patches << " | "
+    md << "| " << r.model << " | " << r.faces << " | " << r.method << " | " << setting_text(r) << " | " << r.scores.patches << " | "
        << fmt(r.scores.lines.coverage) << " | " << fmt(r.scores.lines.redundancy_fraction()) << " | "
        << fmt(r.scores.cut_cost, 2) << " | " << fmt(r.seconds, 3) << " |\n";
   if(!robust.empty())

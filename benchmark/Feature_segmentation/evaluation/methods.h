@@ -7,6 +7,9 @@
 // Methods (face labels in the mesh's face order):
 // - this package's correlation clustering: on the full vertex graph, on the geodesic
 //   watershed graph and on the anisotropic watershed graph (the default), at an alpha;
+//   as segment_along_features() returns it (faces: the majority of their vertices), or
+//   with its boundaries smoothed (smooth_patch_boundaries(); faces: the patch covering
+//   most of their area, majority_face_patches(); the curves kept for curve scores);
 // - CGAL's Polygon_mesh_processing::sharp_edges_segmentation at a dihedral angle;
 // - CGAL's variational shape approximation (approximate_triangle_mesh, L21 metric,
 //   hierarchical seeding) with a given number of proxies.
@@ -20,8 +23,10 @@
 #include <CGAL/Feature_segmentation/crest_lines.h>
 #include <CGAL/Feature_segmentation/edge_weights.h>
 #include <CGAL/Feature_segmentation/evaluation.h>
+#include <CGAL/Feature_segmentation/face_patches.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/smooth_boundaries.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -36,6 +41,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -52,6 +58,7 @@ typedef Mesh::Face_index face_descriptor;
 typedef Mesh::Edge_index edge_descriptor;
 typedef FS::Principal_curvatures<K> Curvatures;
 typedef FS::Feature_lines<Mesh> Lines;
+typedef FS::Patch_boundaries<Mesh> Boundaries;
 
 /// The package's default alpha, the parameter every "default" row uses.
 constexpr double default_alpha = 0.6;
@@ -89,6 +96,9 @@ struct Segmentation
   std::vector<std::size_t> face_patch;   ///< per face index
   std::vector<std::size_t> vertex_patch; ///< per vertex index (from the faces for face-based methods)
   double seconds = 0;
+  /// With smoothed boundaries (smooth_cc()): the smoothed curves; else null.
+  std::shared_ptr<const Boundaries> curves;
+  bool is_smoothed() const { return curves != nullptr; }
 };
 
 /// A mesh with what every method shares: curvatures, feature lines (pruned with the
@@ -169,6 +179,39 @@ inline Segmentation run_cc(const Prepared_mesh& pm, Cc_variant variant, double a
   return s;
 }
 
+/// `s`, a result of run_cc() on `pm` (with the pruned or unpruned lines, as `pruned`
+/// says), with its boundaries smoothed as the package's command-line program does:
+/// compute_patch_boundaries() in the metric of the same curvatures and lines, then
+/// smooth_patch_boundaries() with its defaults (20 iterations at most). The face patches
+/// are those of majority_face_patches() (the patch covering most of a face's area), the
+/// vertex patches those after smoothing (a vertex the boundary crossed changes patch), and
+/// the curves are kept. `seconds` adds the boundaries' time to the segmentation's.
+inline Segmentation smooth_cc(const Prepared_mesh& pm, const Segmentation& s, bool pruned = true)
+{
+  const Mesh& mesh = pm.mesh;
+  auto vpatch = boost::make_function_property_map<vertex_descriptor>(
+    [&s](vertex_descriptor v) { return s.vertex_patch[v.idx()]; });
+  const auto t0 = std::chrono::steady_clock::now();
+  auto boundaries = std::make_shared<Boundaries>(FS::compute_patch_boundaries(
+    mesh, vpatch, FS::parameters::principal_curvature_map(pm.curvature)
+                    .feature_lines(std::cref(pruned ? pm.pruned : pm.unpruned))));
+  FS::smooth_patch_boundaries(*boundaries);
+  auto fpatch = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  auto vsmooth = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+  FS::majority_face_patches(*boundaries, fpatch);
+  boundaries->write_vertex_patches(vsmooth);
+  Segmentation r;
+  r.seconds = s.seconds + seconds_since(t0);
+  r.method = s.method;
+  r.setting = s.setting;
+  r.face_patch.resize(mesh.number_of_faces());
+  r.vertex_patch.resize(mesh.number_of_vertices());
+  for(auto f : faces(mesh)) r.face_patch[f.idx()] = get(fpatch, f);
+  for(auto v : vertices(mesh)) r.vertex_patch[v.idx()] = get(vsmooth, v);
+  r.curves = boundaries;
+  return r;
+}
+
 /// CGAL's sharp_edges_segmentation: patches are the components of faces separated by
 /// edges whose dihedral angle deviates from flat by more than `angle` degrees.
 inline Segmentation run_sharp_edges(const Mesh& mesh, double angle)
@@ -219,6 +262,8 @@ struct Scores
   FS::Boundary_scores boundary;     ///< against the ground-truth patches
   FS::Partition_scores partition;   ///< against the ground-truth patches
   double sharp_curve_recall = 0;    ///< share of ground-truth sharp-curve length within the tolerance of a boundary
+  bool has_curve_scores = false;    ///< smoothed, with a ground truth: curve_boundary is set
+  FS::Boundary_scores curve_boundary; ///< the smoothed curves themselves against the ground-truth patches
 };
 
 /// Ground-truth sharp curves as feature lines through mesh vertices (a point at t = 0 of
@@ -246,6 +291,9 @@ inline Lines curves_as_lines(const Mesh& mesh, const std::vector<std::vector<std
 }
 
 /// Scores `s` on `pm`; `ground_truth` (per face, may be empty) and `sharp_curves` when known.
+/// Every score but the cut cost (on the vertex patches) is computed on the face patches;
+/// for a smoothed segmentation with a ground truth, the boundary scores are computed on
+/// the smoothed curves too (curve_boundary).
 inline Scores score(const Prepared_mesh& pm, const Segmentation& s, const std::vector<int>& ground_truth,
                     const Lines* sharp_curves = nullptr)
 {
@@ -265,6 +313,11 @@ inline Scores score(const Prepared_mesh& pm, const Segmentation& s, const std::v
     r.partition = FS::compare_partitions(s.face_patch, ground_truth, pm.face_area);
     if(sharp_curves != nullptr)
       r.sharp_curve_recall = FS::compare_with_feature_lines(mesh, fmap, *sharp_curves, pm.tolerance, 0.).coverage;
+    if(s.is_smoothed())
+    {
+      r.has_curve_scores = true;
+      r.curve_boundary = FS::compare_boundaries(*s.curves, gmap, pm.tolerance);
+    }
   }
   return r;
 }

@@ -3,13 +3,16 @@
 // Draws the tiles of the evaluation's contact sheets: for every tile of a scene written
 // by evaluate_quality (the mesh, a colour per face, segments over the surface), a PNG
 // with two views of the shaded mesh (front and back, so no side stays hidden), patch
-// boundaries in black where the face colours change, and the feature lines. Rendering is
+// boundaries in black where the face colours change (unless the tile says
+// "face_boundaries 0": its segments are the boundaries, e.g. smoothed curves), and the
+// segments (feature lines, curves). A "blank" entry is an empty place in the sheet. Rendering is
 // Mesa's off-screen OpenGL (OSMesa, Debian package libosmesa6-dev: a software OpenGL
 // implementation, no display or GPU needed), images are written with libpng; each view
 // is drawn at twice the size and averaged down for smooth edges.
 //
 // Usage: render_scenes SCENE OUTPUT_PREFIX [TILE_SIZE]
-// Writes OUTPUT_PREFIX_NN.png per tile and prints "PATH<TAB>LABEL" lines on stdout.
+// Writes OUTPUT_PREFIX_NN.png per tile and prints "PATH<TAB>LABEL" lines on stdout,
+// "null:<TAB>" for a blank (ImageMagick's empty image).
 
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -39,6 +42,8 @@ struct Segment
 
 struct Tile
 {
+  bool blank = false;
+  bool face_boundaries = true;
   std::string label;
   std::vector<std::array<unsigned char, 3> > colour; // per face
   std::vector<Segment> segments;
@@ -89,8 +94,14 @@ Scene read_scene(const std::string& path)
   }
   while(in >> word)
   {
-    if(word != "tile") fail(path + ": expected 'tile', got '" + word + "'");
     Tile t;
+    if(word == "blank")
+    {
+      t.blank = true;
+      sc.tiles.push_back(std::move(t));
+      continue;
+    }
+    if(word != "tile") fail(path + ": expected 'tile' or 'blank', got '" + word + "'");
     std::getline(in, t.label);
     t.label.erase(0, t.label.find_first_not_of(' '));
     std::string line;
@@ -114,6 +125,11 @@ Scene read_scene(const std::string& path)
       }
     }
     in >> word >> n;
+    if(word == "face_boundaries")
+    {
+      t.face_boundaries = n != 0;
+      in >> word >> n;
+    }
     if(word != "segments") fail(path + ": expected 'segments'");
     t.segments.resize(n);
     for(auto& s : t.segments)
@@ -250,7 +266,11 @@ public:
       glVertex3fv(sc.points[e.second].data());
     }
     glEnd();
-    for(float w : {1.f, 3.f})
+    std::vector<float> widths;
+    for(const auto& s : t.segments) widths.push_back(s.width);
+    std::sort(widths.begin(), widths.end());
+    widths.erase(std::unique(widths.begin(), widths.end()), widths.end());
+    for(float w : widths)
     {
       glLineWidth(w * m_size / 400.f);
       glBegin(GL_LINES);
@@ -298,7 +318,12 @@ int main(int argc, char** argv)
   for(std::size_t i = 0; i < sc.tiles.size(); ++i)
   {
     const Tile& t = sc.tiles[i];
-    const auto boundary = boundary_edges(sc, t);
+    if(t.blank)
+    {
+      std::cout << "null:\t\n";
+      continue;
+    }
+    const auto boundary = t.face_boundaries ? boundary_edges(sc, t) : std::vector<std::pair<unsigned, unsigned> >();
     std::vector<unsigned char> out(static_cast<std::size_t>(2 * size) * size * 3);
     for(int side = 0; side < 2; ++side)
     {

@@ -4,9 +4,21 @@
 // precision, recall and F-score within a distance tolerance, the Rand index and the
 // over- and under-segmentation counts; against the input feature lines, with no ground
 // truth, how much strong feature-line length a patch boundary follows (coverage) and how
-// much boundary runs away from every feature line (redundancy). Every measure works on
-// face labels, so that segmentations from any method (this package's, CGAL's sharp-edge
-// segmentation, variational shape approximation) are scored the same way.
+// much boundary runs away from every feature line (redundancy).
+//
+// What each measure is computed on:
+// - cut cost: a vertex labelling and the edge weights (the objective of the solver);
+// - boundary precision/recall/F-score, Rand index, over/under-segmentation, coverage and
+//   redundancy: a face labelling, so that segmentations from any method (this
+//   package's, CGAL's sharp-edge segmentation, variational shape approximation) are
+//   scored the same way; the boundary is then the chain of mesh edges between faces of
+//   different patches. For this package, the face labelling is either the vertex
+//   majority of `segment_along_features()`'s `face_patch_map`, or, after
+//   `smooth_patch_boundaries()`, the majority-area patches of `majority_face_patches()`;
+// - boundary precision/recall/F-score also directly on boundary curves
+//   (`Patch_boundaries`, smoothed or not): the curves' own segments, which cross the
+//   triangles, are scored against the reference's edge chains; this is what a user of
+//   the smoothed boundaries gets, without the staircase of a face labelling.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_EVALUATION_H
 #define CGAL_FEATURE_SEGMENTATION_EVALUATION_H
@@ -14,6 +26,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/internal/evaluation_impl.h>
 
@@ -165,6 +178,25 @@ struct Boundary_scores
   double reference_length = 0.; ///< total length of the reference boundary
 };
 
+namespace internal {
+
+// Precision and recall of the segments `mine` against the segments `theirs`: the body of
+// both overloads of compare_boundaries().
+inline Boundary_scores compare_boundary_segments(const std::vector<Evaluation_segment>& mine,
+                                                 const std::vector<Evaluation_segment>& theirs, double tolerance)
+{
+  const Segment_distance to_mine(mine), to_theirs(theirs);
+  Boundary_scores s;
+  s.boundary_length = total_length(mine);
+  s.reference_length = total_length(theirs);
+  if(s.boundary_length > 0) s.precision = matched_length(mine, to_theirs, tolerance) / s.boundary_length;
+  if(s.reference_length > 0) s.recall = matched_length(theirs, to_mine, tolerance) / s.reference_length;
+  s.f_score = (s.precision + s.recall > 0) ? 2 * s.precision * s.recall / (s.precision + s.recall) : 0.;
+  return s;
+}
+
+} // namespace internal
+
 /// \ingroup PkgFeatureSegmentationEvaluation
 /// Scores the patch boundaries of `face_patch` against those of `reference_face_patch`
 /// on the same mesh. A patch boundary is the set of edges whose two faces have different
@@ -195,16 +227,50 @@ Boundary_scores compare_boundaries(const TriangleMesh& tm, FacePatchMap face_pat
     throw Invalid_input("the boundary tolerance must be a finite number >= 0 (got " + std::to_string(tolerance) + ")");
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, tm));
-  const auto mine = internal::patch_boundary_segments(tm, face_patch, vpm);
-  const auto theirs = internal::patch_boundary_segments(tm, reference_face_patch, vpm);
-  const internal::Segment_distance to_mine(mine), to_theirs(theirs);
-  Boundary_scores s;
-  s.boundary_length = internal::total_length(mine);
-  s.reference_length = internal::total_length(theirs);
-  if(s.boundary_length > 0) s.precision = internal::matched_length(mine, to_theirs, tolerance) / s.boundary_length;
-  if(s.reference_length > 0) s.recall = internal::matched_length(theirs, to_mine, tolerance) / s.reference_length;
-  s.f_score = (s.precision + s.recall > 0) ? 2 * s.precision * s.recall / (s.precision + s.recall) : 0.;
-  return s;
+  return internal::compare_boundary_segments(internal::patch_boundary_segments(tm, face_patch, vpm),
+                                             internal::patch_boundary_segments(tm, reference_face_patch, vpm),
+                                             tolerance);
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
+/// Scores boundary curves on the surface (from `compute_patch_boundaries()`, typically
+/// after `smooth_patch_boundaries()`) against the patch boundaries of the reference face
+/// labelling `reference_face_patch` of the same mesh, as the face-labelling overload does,
+/// but on the curves themselves: the pieces of a curve are its segments (from a point
+/// inside a triangle to a point on an edge, and back), each matched when its midpoint
+/// lies within `tolerance` of a reference boundary edge; a reference edge is matched when
+/// its midpoint lies within `tolerance` of a curve segment. Precision and recall are the
+/// matched shares of the curves' length and of the reference length.
+///
+/// Unlike the face-labelling overload, which sees the boundary as a chain of mesh edges
+/// (a staircase across the triangles a smooth curve cuts), this scores the curves a user
+/// of the boundaries draws, exports or refines the mesh along.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam ReferenceFacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
+/// \param boundaries the curves, on the mesh `boundaries.mesh()`
+/// \param reference_face_patch the patch of every face of that mesh in the reference (the ground truth)
+/// \param tolerance the distance tolerance, in the mesh's units, for example
+///        `default_boundary_tolerance(boundaries.mesh())`
+/// \param np optional named parameters: `vertex_point_map` (of the reference's edges;
+///        it should be the one the curves were computed with)
+/// \throws Invalid_input if `tolerance` is negative or not finite
+template <typename TriangleMesh, typename ReferenceFacePatchMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Boundary_scores compare_boundaries(const Patch_boundaries<TriangleMesh>& boundaries,
+                                   ReferenceFacePatchMap reference_face_patch, double tolerance,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw Invalid_input("the boundary tolerance must be a finite number >= 0 (got " + std::to_string(tolerance) + ")");
+  const TriangleMesh& tm = boundaries.mesh();
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  return internal::compare_boundary_segments(internal::boundary_curve_segments(boundaries),
+                                             internal::patch_boundary_segments(tm, reference_face_patch, vpm),
+                                             tolerance);
 }
 
 /// \ingroup PkgFeatureSegmentationEvaluation

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The work behind evaluation.h: segments of a mesh extracted as plain double-precision
-// geometry (patch boundaries, feature-line pieces), distance queries against a set of
+// geometry (patch boundaries made of mesh edges, boundary curves on the surface,
+// feature-line pieces), distance queries against a set of
 // segments with CGAL's AABB tree, and the contingency table of two face labellings from
 // which the Rand index and the over- and under-segmentation counts are read.
 
@@ -97,6 +98,25 @@ std::vector<Evaluation_segment> patch_boundary_segments(const TriangleMesh& tm, 
     auto h = halfedge(e, tm);
     if(get(face_patch, face(h, tm)) == get(face_patch, face(opposite(h, tm), tm))) continue;
     result.emplace_back(to_evaluation_point(get(vpm, source(h, tm))), to_evaluation_point(get(vpm, target(h, tm))));
+  }
+  return result;
+}
+
+// The segments of boundary curves (a `Patch_boundaries`: polylines whose points lie on
+// the surface, inside triangles and on edges), closing segments of closed curves included.
+template <typename PatchBoundaries>
+std::vector<Evaluation_segment> boundary_curve_segments(const PatchBoundaries& boundaries)
+{
+  std::vector<Evaluation_segment> result;
+  for(const auto& c : boundaries.curves())
+  {
+    const std::size_t n = c.points.size();
+    const std::size_t m = c.is_closed() ? (n > 1 ? n : 0) : (n > 0 ? n - 1 : 0);
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      const auto &a = c.points[i].point, &b = c.points[(i + 1) % n].point;
+      result.emplace_back(Evaluation_point(a[0], a[1], a[2]), Evaluation_point(b[0], b[1], b[2]));
+    }
   }
   return result;
 }
