@@ -319,8 +319,12 @@ public:
     return number_of_patches();
   }
 
+  /// The most edits `undo()` keeps: each record holds the per-edge parameters and the
+  /// labels (some 3 MB on a 200k-face mesh), so older records are dropped.
+  static constexpr std::size_t maximum_undo_depth = 64;
+
   /// Takes back the last edit, restoring the labels exactly. Returns `false` when there
-  /// is nothing to undo.
+  /// is nothing to undo (no edit yet, or `maximum_undo_depth` edits already undone).
   bool undo()
   {
     if(m_undo.empty()) return false;
@@ -390,6 +394,8 @@ private:
                                         m_data.terms.award, m_data.number_of_feature_edges});
     }
     m_undo.push_back(std::move(r));
+    if(m_undo.size() > maximum_undo_depth)
+      m_undo.erase(m_undo.begin());
   }
 
   internal::Oversegmentation singleton_oversegmentation(const std::vector<char>* region) const
