@@ -19,6 +19,6 @@ cmake --build "$build" --target feature_segmentation -j "$jobs"
 
 echo
 echo "Outputs of the default run (fandisk) in $(cd "$output" && pwd):"
-for f in feature_lines.polylines.txt feature_lines.obj segmentation.ply face_patches.txt vertex_patches.txt summary.json; do
+for f in feature_lines.polylines.txt feature_lines.obj segmentation.ply face_patches.txt vertex_patches.txt boundaries.polylines.txt segmentation_refined.ply summary.json; do
   echo "  $f"
 done
