@@ -19,8 +19,8 @@
 // Each correlation-clustering variant gets two more rows "with smoothing", at the same
 // two alphas: the boundaries smoothed (smooth_patch_boundaries(), 20 iterations at most),
 // every face scored with the patch covering most of its area (majority_face_patches());
-// with a ground truth, the boundary precision/recall/F-score of the smoothed curves
-// themselves too (the "curve" columns). Without smoothing, a face has the patch of the
+// the coverage and redundancy and, with a ground truth, the boundary precision/recall/
+// F-score of the smoothed curves themselves too (the "curve" columns). Without smoothing, a face has the patch of the
 // majority of its vertices (segment_along_features()'s face_patch_map).
 // VSA is given the ground-truth patch count, or without a ground truth the patch count of
 // the default segmentation.
@@ -438,7 +438,7 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
     std::ofstream csv(out / "table.csv");
     csv << "model,faces,method,setting,role,patches,cut_cost,coverage,redundant_length,redundancy_fraction,"
            "precision,recall,f_score,rand_index,over_segmentation,under_segmentation,sharp_curve_recall,seconds,"
-           "smoothed,curve_precision,curve_recall,curve_f_score\n";
+           "smoothed,curve_precision,curve_recall,curve_f_score,curve_coverage,curve_redundancy_fraction\n";
     for(const Row& r : rows)
     {
       const Scores& s = r.scores;
@@ -456,6 +456,9 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
         csv << s.curve_boundary.precision << "," << s.curve_boundary.recall << "," << s.curve_boundary.f_score;
       else
         csv << ",,";
+      csv << ",";
+      if(s.is_smoothed) csv << s.curve_lines.coverage << "," << s.curve_lines.redundancy_fraction();
+      else csv << ",";
       csv << "\n";
     }
   }
@@ -499,12 +502,16 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
     }
   md << "\n## Against the feature lines (every model, no ground truth needed)\n\n"
      << "Coverage: share of the strong feature-line length (strength >= 10) within the tolerance of a patch "
-        "boundary. Redundancy: share of the boundary length farther than the tolerance from every detected line.\n\n"
-     << "| model | faces | method | setting | patches | coverage | redundancy | cut cost | seconds |\n"
-        "|---|---|---|---|---|---|---|---|---|\n";
+        "boundary. Redundancy: share of the boundary length farther than the tolerance from every detected line. "
+        "Both on the face patches' boundary edges, and for smoothed rows on the smoothed curves too (curve "
+        "columns).\n\n"
+     << "| model | faces | method | setting | patches | coverage | redundancy | curve coverage | curve redundancy | "
+        "cut cost | seconds |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
-    md << "| " << r.model << " | " << r.faces << " | " << r.method << " | " << setting_text(r) << " | " << r.scores.patches << " | "
-       << fmt(r.scores.lines.coverage) << " | " << fmt(r.scores.lines.redundancy_fraction()) << " | "
+    md << "| " << r.model << " | " << r.faces << " | " << r.method << " | " << setting_text(r) << " | "
+       << r.scores.patches << " | " << fmt(r.scores.lines.coverage) << " | " << fmt(r.scores.lines.redundancy_fraction())
+       << " | " << (r.scores.is_smoothed ? fmt(r.scores.curve_lines.coverage) : std::string("-")) << " | "
+       << (r.scores.is_smoothed ? fmt(r.scores.curve_lines.redundancy_fraction()) : std::string("-")) << " | "
        << fmt(r.scores.cut_cost, 2) << " | " << fmt(r.seconds, 3) << " |\n";
   if(!robust.empty())
   {

@@ -262,6 +262,8 @@ struct Scores
   FS::Boundary_scores boundary;     ///< against the ground-truth patches
   FS::Partition_scores partition;   ///< against the ground-truth patches
   double sharp_curve_recall = 0;    ///< share of ground-truth sharp-curve length within the tolerance of a boundary
+  bool is_smoothed = false;         ///< curve_lines is set
+  FS::Feature_line_scores curve_lines; ///< the smoothed curves themselves against the pruned detected lines
   bool has_curve_scores = false;    ///< smoothed, with a ground truth: curve_boundary is set
   FS::Boundary_scores curve_boundary; ///< the smoothed curves themselves against the ground-truth patches
 };
@@ -292,8 +294,8 @@ inline Lines curves_as_lines(const Mesh& mesh, const std::vector<std::vector<std
 
 /// Scores `s` on `pm`; `ground_truth` (per face, may be empty) and `sharp_curves` when known.
 /// Every score but the cut cost (on the vertex patches) is computed on the face patches;
-/// for a smoothed segmentation with a ground truth, the boundary scores are computed on
-/// the smoothed curves too (curve_boundary).
+/// for a smoothed segmentation, the coverage and redundancy (curve_lines) and, with a
+/// ground truth, the boundary scores (curve_boundary) are computed on the smoothed curves too.
 inline Scores score(const Prepared_mesh& pm, const Segmentation& s, const std::vector<int>& ground_truth,
                     const Lines* sharp_curves = nullptr)
 {
@@ -305,6 +307,11 @@ inline Scores score(const Prepared_mesh& pm, const Segmentation& s, const std::v
   r.patches = FS::number_of_patches(mesh, fmap);
   r.cut_cost = FS::cut_cost(mesh, vmap, wmap);
   r.lines = FS::compare_with_feature_lines(mesh, fmap, pm.pruned, pm.tolerance);
+  if(s.is_smoothed())
+  {
+    r.is_smoothed = true;
+    r.curve_lines = FS::compare_with_feature_lines(*s.curves, pm.pruned, pm.tolerance);
+  }
   if(!ground_truth.empty())
   {
     r.has_ground_truth = true;
