@@ -1,11 +1,13 @@
-// Quality metrics (evaluation.h) on hand-computable cases, the YAML reader of the
-// ground-truth format, and quality floors: on fandisk always, on the ABC model when the
-// shared data folder is present ($FEATURE_SEGMENTATION_DATA, else ../shared/data beside
-// the clone). The floors are the values evaluate_quality measured, less a small margin,
-// so that a loss of segmentation quality fails the build.
+// Quality metrics (evaluation.h) on hand-computable cases (face labellings and boundary
+// curves), the YAML reader of the ground-truth format, and quality floors, without and
+// with boundary smoothing: on fandisk always, on the ABC model when the shared data
+// folder is present ($FEATURE_SEGMENTATION_DATA, else ../shared/data beside the clone).
+// The floors are the values evaluate_quality measured, less a small margin, so that a
+// loss of segmentation quality fails the build.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/evaluation.h>
+#include <CGAL/Feature_segmentation/smooth_boundaries.h>
 
 #include "../../benchmark/Feature_segmentation/evaluation/abc_ground_truth.h"
 #include "../../benchmark/Feature_segmentation/evaluation/methods.h"
@@ -176,6 +178,44 @@ BOOST_AUTO_TEST_CASE(coverage_and_redundancy_on_a_grid)
   BOOST_CHECK_CLOSE(s.coverage, 0.4 / 4., 1e-9);
 }
 
+BOOST_AUTO_TEST_CASE(boundary_curves_on_a_grid)
+{
+  // Vertices with x < 0 in patch 0: the curve crosses the column of triangles between
+  // x = -0.2 and x = 0, from the border at y = -1 to the border at y = 1.
+  const Mesh m = square();
+  auto vlabel = boost::make_function_property_map<FE::vertex_descriptor>(
+    [&](FE::vertex_descriptor v) { return m.point(v).x() < -1e-9 ? 0 : 1; });
+  FS::Patch_boundaries<Mesh> b = FS::compute_patch_boundaries(m, vlabel);
+  BOOST_REQUIRE_EQUAL(b.curves().size(), 1u);
+  const auto truth = face_labels(m, [](const FE::K::Point_3& c) { return c.x() < 0 ? 0 : 1; });
+  const auto far = face_labels(m, [](const FE::K::Point_3& c) { return c.x() < 0.6 ? 0 : 1; });
+  // Every point of the curve is within 0.2 of x = 0 and at least 0.6 from x = 0.6.
+  FS::Boundary_scores s = FS::compare_boundaries(b, as_map(truth), 0.25);
+  BOOST_CHECK_EQUAL(s.f_score, 1.);
+  BOOST_CHECK_CLOSE(s.boundary_length, b.curves()[0].length(), 1e-9);
+  BOOST_CHECK_CLOSE(s.reference_length, 2., 1e-9);
+  BOOST_CHECK_GT(s.boundary_length, 2.); // a zigzag through the triangles' centroids
+  s = FS::compare_boundaries(b, as_map(far), 0.25);
+  BOOST_CHECK_EQUAL(s.precision, 0.);
+  BOOST_CHECK_EQUAL(s.recall, 0.);
+  BOOST_CHECK_THROW(FS::compare_boundaries(b, as_map(truth), -1.), FS::Invalid_input);
+  FS::Feature_lines<Mesh> lines;
+  lines.lines.push_back(line_through_vertices(m, 0, -1, 0, 1, 20.));
+  FS::Feature_line_scores c = FS::compare_with_feature_lines(b, lines, 0.25);
+  BOOST_CHECK_EQUAL(c.coverage, 1.);
+  BOOST_CHECK_EQUAL(c.redundant_length, 0.);
+  lines.lines[0] = line_through_vertices(m, 0.6, -1, 0.6, 1, 20.);
+  c = FS::compare_with_feature_lines(b, lines, 0.25);
+  BOOST_CHECK_EQUAL(c.coverage, 0.);
+  BOOST_CHECK_CLOSE(c.redundancy_fraction(), 1., 1e-9);
+  // Smoothed on flat ground, the curve becomes straight: the segment from border to border.
+  FS::smooth_patch_boundaries(b);
+  s = FS::compare_boundaries(b, as_map(truth), 0.25);
+  BOOST_TEST_MESSAGE("grid curve: length " << s.boundary_length << " after smoothing");
+  BOOST_CHECK_CLOSE(s.boundary_length, 2., 0.5);
+  BOOST_CHECK_EQUAL(s.f_score, 1.);
+}
+
 BOOST_AUTO_TEST_CASE(cut_cost_and_vertex_patches_by_hand)
 {
   // One quad (-1,-1), (1,-1), (-1,1), (1,1) split along the diagonal v0-v3.
@@ -219,25 +259,44 @@ BOOST_AUTO_TEST_CASE(yaml_reader_flow_and_block)
   BOOST_CHECK_THROW(FE::Yaml_parser("a: &x 1\n").parse(), FE::Yaml_error);
 }
 
-// Floors on fandisk (no ground truth): coverage of the strong feature lines, redundancy,
+// Floors on fandisk (no ground truth): coverage of the strong feature lines, redundancy
+// (also with smoothing, on the face patches and on the curves),
 // and stability under 0.1% normal noise, for the package's default path.
 BOOST_AUTO_TEST_CASE(fandisk_floors)
 {
   Mesh mesh;
   BOOST_REQUIRE(CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", mesh));
   const FE::Prepared_mesh pm(mesh);
-  struct Floor { FE::Cc_variant v; double alpha, coverage, redundancy; };
-  const Floor floors[] = {{FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.6, 0.85, 0.02},
-                          {FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.8, 0.97, 0.02},
-                          {FE::Cc_variant::GEODESIC_WATERSHED, 0.6, 0.85, 0.02},
-                          {FE::Cc_variant::FULL_GRAPH, 0.6, 0.68, 0.02}};
+  // Without smoothing: coverage floor, redundancy ceiling. With smoothing (the default and
+  // best alphas of evaluate_quality; 0 when not scored): the same on the majority-area face
+  // patches, then on the smoothed curves.
+  struct Floor { FE::Cc_variant v; double alpha, coverage, redundancy, smoothed[2], curves[2]; };
+  const Floor floors[] = {{FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.6, 0.85, 0.02, {0.82, 0.065}, {0.825, 0.05}},
+                          {FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.7, 0.97, 0.02, {0.94, 0.06}, {0.945, 0.05}},
+                          {FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.8, 0.97, 0.02, {0, 0}, {0, 0}},
+                          {FE::Cc_variant::GEODESIC_WATERSHED, 0.6, 0.85, 0.02, {0.82, 0.06}, {0.825, 0.05}},
+                          {FE::Cc_variant::GEODESIC_WATERSHED, 0.8, 0.97, 0.02, {0.95, 0.055}, {0.955, 0.05}},
+                          {FE::Cc_variant::FULL_GRAPH, 0.6, 0.68, 0.02, {0.655, 0.06}, {0.66, 0.05}},
+                          {FE::Cc_variant::FULL_GRAPH, 1.2, 0.93, 0.03, {0.90, 0.085}, {0.90, 0.07}}};
   for(const Floor& f : floors)
   {
-    const FE::Scores s = FE::score(pm, FE::run_cc(pm, f.v, f.alpha), {});
+    const FE::Segmentation seg = FE::run_cc(pm, f.v, f.alpha);
+    const FE::Scores s = FE::score(pm, seg, {});
     BOOST_TEST_MESSAGE("fandisk " << FE::name(f.v) << " alpha " << f.alpha << ": coverage " << s.lines.coverage
                        << ", redundancy " << s.lines.redundancy_fraction() << ", " << s.patches << " patches");
     BOOST_CHECK_GE(s.lines.coverage, f.coverage);
     BOOST_CHECK_LE(s.lines.redundancy_fraction(), f.redundancy);
+    if(f.smoothed[0] == 0) continue;
+    const FE::Scores t = FE::score(pm, FE::smooth_cc(pm, seg), {});
+    BOOST_TEST_MESSAGE("  smoothed: coverage " << t.lines.coverage << ", redundancy " << t.lines.redundancy_fraction()
+                       << "; curves: coverage " << t.curve_lines.coverage << ", redundancy "
+                       << t.curve_lines.redundancy_fraction() << ", " << t.patches << " patches");
+    BOOST_REQUIRE(t.is_smoothed);
+    BOOST_CHECK_EQUAL(t.patches, s.patches); // smoothing keeps every patch, and here each keeps a face
+    BOOST_CHECK_GE(t.lines.coverage, f.smoothed[0]);
+    BOOST_CHECK_LE(t.lines.redundancy_fraction(), f.smoothed[1]);
+    BOOST_CHECK_GE(t.curve_lines.coverage, f.curves[0]);
+    BOOST_CHECK_LE(t.curve_lines.redundancy_fraction(), f.curves[1]);
   }
   const FE::Segmentation clean = FE::run_cc(pm, FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.6);
   const Mesh noisy = FE::add_normal_noise(mesh, 0.001, 20170601u);
@@ -248,7 +307,8 @@ BOOST_AUTO_TEST_CASE(fandisk_floors)
   BOOST_CHECK_GE(ri, 0.72); // measured 0.758: at alpha 0.6 fandisk has 4 patches, and noise merges some
 }
 
-// Floors on the ABC model against its ground truth, when the shared data is present.
+// Floors on the ABC model against its ground truth (also with smoothing, on the face
+// patches and on the curves), when the shared data is present.
 BOOST_AUTO_TEST_CASE(abc_floors)
 {
   const std::filesystem::path dir = std::filesystem::path(shared_data_dir()) / "abc";
@@ -270,18 +330,33 @@ BOOST_AUTO_TEST_CASE(abc_floors)
   BOOST_CHECK_EQUAL(std::count(gt.face_patch.begin(), gt.face_patch.end(), -1), 0);
   const FE::Lines sharp = FE::curves_as_lines(mesh, gt.curves, gt.curve_is_sharp);
   const FE::Prepared_mesh pm(mesh);
-  struct Floor { FE::Cc_variant v; double alpha, f_score, rand_index; };
-  const Floor floors[] = {{FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.6, 0.95, 0.975},
-                          {FE::Cc_variant::ANISOTROPIC_WATERSHED, 1.0, 0.98, 0.985},
-                          {FE::Cc_variant::GEODESIC_WATERSHED, 0.6, 0.95, 0.975},
-                          {FE::Cc_variant::FULL_GRAPH, 0.6, 0.93, 0.96}};
+  // Without smoothing: boundary F-score and Rand index. With smoothing (the default and
+  // best alphas of evaluate_quality): the same on the majority-area face patches, and the
+  // F-score of the smoothed curves themselves.
+  struct Floor { FE::Cc_variant v; double alpha, f_score, rand_index, smoothed_f_score, smoothed_rand_index, curve_f_score; };
+  const Floor floors[] = {{FE::Cc_variant::ANISOTROPIC_WATERSHED, 0.6, 0.95, 0.975, 0.945, 0.98, 0.93},
+                          {FE::Cc_variant::ANISOTROPIC_WATERSHED, 1.0, 0.98, 0.985, 0.97, 0.99, 0.97},
+                          {FE::Cc_variant::GEODESIC_WATERSHED, 0.6, 0.95, 0.975, 0.945, 0.98, 0.93},
+                          {FE::Cc_variant::GEODESIC_WATERSHED, 1.0, 0.97, 0.98, 0.96, 0.985, 0.955},
+                          {FE::Cc_variant::FULL_GRAPH, 0.6, 0.93, 0.96, 0.925, 0.96, 0.915},
+                          {FE::Cc_variant::FULL_GRAPH, 1.0, 0.975, 0.98, 0.97, 0.985, 0.96}};
   for(const Floor& f : floors)
   {
-    const FE::Scores s = FE::score(pm, FE::run_cc(pm, f.v, f.alpha), gt.face_patch, &sharp);
+    const FE::Segmentation seg = FE::run_cc(pm, f.v, f.alpha);
+    const FE::Scores s = FE::score(pm, seg, gt.face_patch, &sharp);
     BOOST_TEST_MESSAGE("ABC 00000006 " << FE::name(f.v) << " alpha " << f.alpha << ": F " << s.boundary.f_score
                        << ", Rand index " << s.partition.rand_index << ", " << s.patches << " patches");
     BOOST_CHECK_GE(s.boundary.f_score, f.f_score);
     BOOST_CHECK_GE(s.partition.rand_index, f.rand_index);
+    const FE::Scores t = FE::score(pm, FE::smooth_cc(pm, seg), gt.face_patch, &sharp);
+    BOOST_TEST_MESSAGE("  smoothed: F " << t.boundary.f_score << ", Rand index " << t.partition.rand_index
+                       << "; curves: P " << t.curve_boundary.precision << ", R " << t.curve_boundary.recall
+                       << ", F " << t.curve_boundary.f_score);
+    BOOST_REQUIRE(t.has_curve_scores);
+    BOOST_CHECK_EQUAL(t.patches, s.patches);
+    BOOST_CHECK_GE(t.boundary.f_score, f.smoothed_f_score);
+    BOOST_CHECK_GE(t.partition.rand_index, f.smoothed_rand_index);
+    BOOST_CHECK_GE(t.curve_boundary.f_score, f.curve_f_score);
   }
   // The sharp-edge baseline at a small angle recovers this ground truth exactly: the
   // metric and the reader agree with the data.
