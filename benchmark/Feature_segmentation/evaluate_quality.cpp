@@ -479,8 +479,8 @@ void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::
      << "smoothed (smooth_patch_boundaries, 20 iterations at most) and every face given the patch covering most of "
      << "its area (majority_face_patches); without it, a face has the patch of the majority of its vertices. Every "
      << "score is computed on the face patches (the boundary is the chain of mesh edges between faces of different "
-     << "patches), except the cut cost (on the vertex patches) and the curve columns: precision, recall and F-score "
-     << "of the smoothed curves themselves.\n\n";
+     << "patches), except the cut cost (on the vertex patches) and the curve columns, computed on the smoothed curves "
+     << "themselves (their segments cross the triangles).\n\n";
   md << "## Against the ground truth\n\n"
      << "| model | method | setting | patches | boundary P | boundary R | boundary F | Rand index | over | under | "
         "sharp-curve recall | cut cost | curve P | curve R | curve F |\n"
