@@ -3,6 +3,7 @@
 #ifndef FS_BENCH_COMMON_H
 #define FS_BENCH_COMMON_H
 
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
@@ -49,6 +50,23 @@ inline std::string cpu_name()
         return line.substr(colon + 2);
     }
   return "unknown";
+}
+
+// Reads a triangle mesh; on failure, `error` says why.
+template <typename Mesh>
+bool read_mesh(const std::string& path, Mesh& mesh, std::string& error)
+{
+  if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path, mesh))
+  {
+    error = "unreadable";
+    return false;
+  }
+  if(!CGAL::is_triangle_mesh(mesh))
+  {
+    error = "not a triangle mesh";
+    return false;
+  }
+  return true;
 }
 
 // Remeshes `mesh` isotropically with target edge length L, its sharp edges (dihedral

@@ -58,6 +58,7 @@ namespace fsys = std::filesystem;
 namespace {
 
 using fs_bench::cpu_name;
+using fs_bench::read_mesh;
 using fs_bench::fastest;
 using fs_bench::refine_to_faces;
 using fs_bench::seconds_since;
@@ -101,21 +102,6 @@ bool parse_options(int argc, char** argv, Options& options)
     else return false;
   }
   return options.target_faces > 0;
-}
-
-bool read_mesh(const std::string& path, Mesh& mesh, std::string& error)
-{
-  if(!PMP::IO::read_polygon_mesh(path, mesh))
-  {
-    error = "unreadable";
-    return false;
-  }
-  if(!CGAL::is_triangle_mesh(mesh))
-  {
-    error = "not a triangle mesh";
-    return false;
-  }
-  return true;
 }
 
 // The pipeline, stage by stage, then in one call; fills the timing columns of `row`.
