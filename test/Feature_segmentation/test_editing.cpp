@@ -14,6 +14,8 @@
 #include "test_meshes.h"
 
 #include <cmath>
+#include <memory>
+#include <stdexcept>
 #include <map>
 #include <vector>
 
@@ -206,6 +208,33 @@ BOOST_AUTO_TEST_CASE(boundaries_from_the_class)
   BOOST_TEST(c.curves().size() == b.curves().size());
   BOOST_TEST(c.length() == b.length(), boost::test_tools::tolerance(1e-12));
   BOOST_TEST(c.anisotropic_length() == b.anisotropic_length(), boost::test_tools::tolerance(1e-12));
+}
+
+// A solver that throws leaves the object as it was before the edit; bad faces and far
+// sketch points are refused.
+BOOST_AUTO_TEST_CASE(failed_edits_leave_the_state_unchanged)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::Lobed_torus{}.soup(80, 64));
+  std::shared_ptr<int> calls = std::make_shared<int>(0);
+  auto solver = [calls](const FS::Correlation_clustering_graph& g, std::vector<std::size_t>& labels) -> std::size_t {
+    if(++*calls > 1) throw std::runtime_error("solver failure");
+    return FS::Default_correlation_clustering_solver()(g, labels);
+  };
+  Segmentation seg(m, FS::parameters::alpha(1.0).solver(solver));
+  BOOST_REQUIRE(seg.number_of_patches() == 8u);
+  const auto before = labels(m, seg);
+  const double cost = seg.cut_cost();
+  BOOST_CHECK_THROW(seg.set_alpha(0.6), std::runtime_error);
+  BOOST_TEST(seg.alpha() == 1.0);
+  BOOST_TEST(seg.number_of_patches() == 8u);
+  BOOST_TEST((labels(m, seg) == before));
+  BOOST_TEST(seg.cut_cost() == cost);
+  BOOST_TEST(seg.number_of_undoable_edits() == 0u);
+  std::vector<SM::Face_index> bad{SM::Face_index()};
+  BOOST_CHECK_THROW(seg.add_to_alpha(bad, 0.1), FS::Invalid_input);
+  std::vector<Segmentation::Sketch_point> far{{*m.faces().begin(), K::Point_3(100, 0, 0)},
+                                              {*m.faces().begin(), K::Point_3(0, 0, 0)}};
+  BOOST_CHECK_THROW(seg.add_sketch(far), FS::Invalid_input);
 }
 
 BOOST_AUTO_TEST_CASE(works_on_polyhedron)

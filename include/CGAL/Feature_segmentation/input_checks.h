@@ -95,7 +95,7 @@ Mesh_check_report check_input_mesh(const TriangleMesh& tm,
     for(auto v : vertices(tm))
     {
       if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
-        continue; // an isolated vertex takes no part in any stage
+        continue; // an isolated vertex has no fan (the segmentation makes it a patch of its own)
       std::size_t fan = 0;
       for(auto h : CGAL::halfedges_around_target(v, tm)) { (void)h; ++fan; }
       if(fan != get(vdeg, v))

@@ -67,6 +67,19 @@ double mean_edge_length(const Segmentation_data<TriangleMesh>& data)
   return data.edge_vertices.empty() ? 0. : sum / double(data.edge_vertices.size());
 }
 
+// Distance from a sketch point to the face it claims to lie in.
+template <typename TriangleMesh>
+double distance_to_face(const Segmentation_data<TriangleMesh>& data, const Sketch_input& s)
+{
+  const auto& idx = data.idx;
+  const TriangleMesh& tm = idx.mesh();
+  auto h = halfedge(idx.face_at(s.face), tm);
+  const Eigen::Vector3d& a = data.vin[idx.id(source(h, tm))].p;
+  const Eigen::Vector3d& b = data.vin[idx.id(target(h, tm))].p;
+  const Eigen::Vector3d& c = data.vin[idx.id(target(next(h, tm), tm))].p;
+  return (closest_point_on_triangle(s.point, a, b, c) - s.point).norm();
+}
+
 template <typename TriangleMesh>
 std::vector<Sketch_crossing> walk_sketch(const Segmentation_data<TriangleMesh>& data,
                                          const std::vector<Sketch_input>& sketch)
@@ -148,7 +161,9 @@ std::vector<Sketch_crossing> walk_sketch(const Segmentation_data<TriangleMesh>& 
           if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
           const std::size_t gi = idx.id(g);
           const double d = distance(gi, s);
-          if(d < best_d || (d == best_d && gi < best)) { best = gi; best_d = d; }
+          // on a tie the walk stays where it is (a sample on a vertex is at distance 0 of
+          // every face around it) or, between others, takes the smallest id
+          if(d < best_d || (d == best_d && best != current && gi < best)) { best = gi; best_d = d; }
         }
       connect(current, best, s);
       current = best;
