@@ -37,6 +37,14 @@ double fastest(std::size_t repeat, F f)
   return best;
 }
 
+// A field of a CSV file: quoted, since a CPU name or a status may hold a comma.
+inline std::string csv_text(const std::string& s)
+{
+  std::string q = "\"";
+  for(char ch : s) { if(ch == '"') q += '"'; q += ch; }
+  return q + "\"";
+}
+
 // The CPU model as /proc/cpuinfo names it.
 inline std::string cpu_name()
 {

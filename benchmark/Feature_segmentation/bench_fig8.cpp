@@ -85,6 +85,7 @@ namespace fsys = std::filesystem;
 namespace {
 
 using fs_bench::cpu_name;
+using fs_bench::csv_text;
 using fs_bench::read_mesh;
 using fs_bench::fastest;
 using fs_bench::refine_to_faces;
@@ -360,14 +361,6 @@ void write_svg(std::ostream& out, const std::vector<Row>& rows, const std::strin
   svg_panel(out, 450, "Cut cost", "cut cost (Eq. 1)", x, {cost_full, cost_geo, cost_aniso}, false);
   out << "<text x=\"20\" y=\"825\" font-size=\"11\" fill=\"#444444\">" << xml_text(caption) << "</text>\n"
       << "</svg>\n";
-}
-
-// A field of the CSV: quoted, since a CPU name may hold a comma.
-std::string csv_text(const std::string& s)
-{
-  std::string q = "\"";
-  for(char c : s) { if(c == '"') q += '"'; q += c; }
-  return q + "\"";
 }
 
 } // namespace

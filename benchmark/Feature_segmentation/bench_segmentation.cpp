@@ -58,6 +58,7 @@ namespace fsys = std::filesystem;
 namespace {
 
 using fs_bench::cpu_name;
+using fs_bench::csv_text;
 using fs_bench::read_mesh;
 using fs_bench::fastest;
 using fs_bench::refine_to_faces;
@@ -186,14 +187,6 @@ void print_row(const Row& r)
                 format_seconds(r.total).c_str(), r.patches, r.cut_cost,
                 format_seconds(r.default_total).c_str(), r.default_patches, r.status.c_str());
   std::cout << line << std::flush;
-}
-
-// A field of the CSV: quoted, since a status may hold a comma.
-std::string csv_text(const std::string& s)
-{
-  std::string q = "\"";
-  for(char c : s) { if(c == '"') q += '"'; q += c; }
-  return q + "\"";
 }
 
 } // namespace

@@ -24,10 +24,8 @@ namespace internal {
 
 struct Oversegmentation
 {
-  std::vector<long> face_basin;             // basin id, or watershed_label
   std::vector<std::size_t> vertex_segment;  // oversegment of every vertex, 0..k-1
   std::size_t number_of_segments = 0;
-  std::size_t number_of_basins = 0;
 };
 
 // From face basins to vertex oversegments: see the three steps below.
@@ -71,9 +69,10 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   std::vector<double> height = multi_source_distances(g, source);
   for(double& h : height) h = -h; // basins lie far from the features
   Oversegmentation os;
-  os.face_basin = immersion_watershed(g, height, &os.number_of_basins);
+  // face basins are only a step towards the vertex oversegments: not kept
+  std::vector<long> face_basin = immersion_watershed(g, height);
   for(std::size_t f = 0; f < nf; ++f)
-    if(!face_in[f]) os.face_basin[f] = watershed_label; // outside the region: not a basin face
+    if(!face_in[f]) face_basin[f] = watershed_label; // outside the region: not a basin face
 
   // 1. Majority basin of the basin faces around each vertex, ties to the smallest id.
   const std::size_t none = std::size_t(-1);
@@ -86,10 +85,10 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
     for(auto h : CGAL::halfedges_around_target(idx.vertex_at(v), tm))
     {
       const std::size_t f = idx.face_id(h);
-      if(f == Mesh_indexing<TriangleMesh>::npos || os.face_basin[f] == watershed_label) continue;
+      if(f == Mesh_indexing<TriangleMesh>::npos || face_basin[f] == watershed_label) continue;
       auto it = std::find_if(counts.begin(), counts.end(),
-                             [&](const std::pair<long, int>& c) { return c.first == os.face_basin[f]; });
-      if(it == counts.end()) counts.emplace_back(os.face_basin[f], 1);
+                             [&](const std::pair<long, int>& c) { return c.first == face_basin[f]; });
+      if(it == counts.end()) counts.emplace_back(face_basin[f], 1);
       else ++it->second;
     }
     if(counts.empty()) continue;
