@@ -14,6 +14,7 @@
 #include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/Solver_sequence.h>
 #include <CGAL/Feature_segmentation/Watershed_distance.h>
+#include <CGAL/Feature_segmentation/internal/crease_cut.h>
 #include <CGAL/Feature_segmentation/internal/face_patch_rule.h>
 #include <CGAL/Feature_segmentation/internal/oversegmentation_impl.h>
 #include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
@@ -25,6 +26,8 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -89,12 +92,13 @@ public:
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Feature_aligned_segmentation(const TriangleMesh& tm,
                                         const NamedParameters& np = CGAL::parameters::default_values())
-    : m_data(tm)
+    : m_opt(internal::read_segmentation_options<TriangleMesh>(np)),
+      m_work(make_working(tm, np, m_opt)),
+      m_data(m_work->cut.is_cut() ? *m_work->cut.mesh : tm)
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
-    m_opt = internal::read_segmentation_options<TriangleMesh>(np);
-    internal::prepare_segmentation_data(tm, np, m_opt, m_data, m_lines);
+    prepare(tm, np);
     m_anisotropic = choose_parameter(get_parameter(np, internal_np::watershed_distance),
                                      Watershed_distance::ANISOTROPIC) == Watershed_distance::ANISOTROPIC;
     m_reduced = choose_parameter(get_parameter(np, internal_np::use_oversegmentation), true);
@@ -104,7 +108,6 @@ public:
       return solver(g, labels);
     };
     m_state.alpha = m_opt.alpha;
-    m_state.alpha_e = internal::edge_alphas(m_data, m_opt, np);
     m_heavy = std::make_shared<Heavy>();
     build_oversegmentation_everywhere(*m_heavy);
     m_state.group.resize(m_heavy->os.number_of_segments);
@@ -117,29 +120,43 @@ public:
 
   /// The number of patches.
   std::size_t number_of_patches() const { return m_state.number_of_patches; }
-  /// The patch of a vertex, in `0 .. number_of_patches()-1` (numbered in vertex order).
-  std::size_t patch(vertex_descriptor v) const { return m_state.labels[m_data.idx.id(v)]; }
-  /// The patch of a face: the majority of its vertices' patches, or the smallest when all
-  /// three differ.
+  /// The patch of a vertex, in `0 .. number_of_patches()-1`. A vertex on a crease has a
+  /// copy on each side of it in `working_mesh()`; this is the patch of the copy in the
+  /// sector of its first face (`face_patches()` is exact along creases).
+  std::size_t patch(vertex_descriptor v) const { return m_state.labels[working_vertex(v)]; }
+  /// The patch of a face: the majority of its corners' patches in `working_mesh()`, or the
+  /// smallest when all three differ. A face next to a crease has its corners on its own
+  /// side of the crease, so it never takes the patch across the crease.
   std::size_t patch(face_descriptor f) const
   {
+    check_face(f);
     const TriangleMesh& tm = m_data.idx.mesh();
-    auto h = halfedge(f, tm);
-    return internal::face_patch_from_vertices(patch(source(h, tm)), patch(target(h, tm)),
-                                              patch(target(next(h, tm), tm)));
+    auto h = halfedge(working_face(f), tm);
+    const auto& l = m_state.labels;
+    return internal::face_patch_from_vertices(l[m_data.idx.id(source(h, tm))], l[m_data.idx.id(target(h, tm))],
+                                              l[m_data.idx.id(target(next(h, tm), tm))]);
   }
-  /// Writes the patch of every vertex into a `WritablePropertyMap` from `vertex_descriptor`.
+  /// Writes the patch of every vertex (as `patch(vertex_descriptor)`) into a
+  /// `WritablePropertyMap` from `vertex_descriptor`.
   template <typename VertexPatchMap>
   void vertex_patches(VertexPatchMap map) const
   {
     typedef typename boost::property_traits<VertexPatchMap>::value_type Id;
-    for(std::size_t v = 0; v < m_state.labels.size(); ++v)
-      put(map, m_data.idx.vertex_at(v), static_cast<Id>(m_state.labels[v]));
+    for(std::size_t v = 0; v < input_indexing().number_of_vertices(); ++v)
+      put(map, input_indexing().vertex_at(v), static_cast<Id>(m_state.labels[working_vertex(v)]));
   }
-  /// Writes the patch of every face into a `WritablePropertyMap` from `face_descriptor`.
+  /// Writes the patch of every face (as `patch(face_descriptor)`) into a
+  /// `WritablePropertyMap` from `face_descriptor`.
   template <typename FacePatchMap>
-  void face_patches(FacePatchMap map) const { internal::write_face_patches(m_data.idx, m_state.labels, map); }
-  /// The cut cost (Eq. 1) of the current segmentation under the current weights.
+  void face_patches(FacePatchMap map) const
+  {
+    typedef typename boost::property_traits<FacePatchMap>::value_type Id;
+    const internal::Mesh_indexing<TriangleMesh>& in = input_indexing();
+    for(std::size_t f = 0; f < in.number_of_faces(); ++f)
+      put(map, in.face_at(f), static_cast<Id>(patch(in.face_at(f))));
+  }
+  /// The cut cost (Eq. 1) of the current segmentation under the current weights (the
+  /// crease ties included).
   double cut_cost() const
   {
     double cost = 0;
@@ -151,18 +168,48 @@ public:
   }
   /// The global parameter alpha.
   double alpha() const { return m_state.alpha; }
-  /// The parameter `alpha_e` of an edge.
-  double alpha(edge_descriptor e) const { return m_state.alpha_e[m_data.idx.id(e)]; }
-  /// The weight `w(e) = Similarity(e) - alpha_e Award(e)` of an edge.
-  double weight(edge_descriptor e) const { return weight(m_data.idx.id(e)); }
-  /// Whether an edge is a feature edge (from the feature lines, the user or a sketch).
-  bool is_feature_edge(edge_descriptor e) const { return m_data.is_feature_edge[m_data.idx.id(e)] != 0; }
-  /// The feature lines (detected or given), without the sketches.
+  /// The parameter `alpha_e` of an edge (of a crease: that of its ties).
+  double alpha(edge_descriptor e) const
+  {
+    const auto t = ties_of(input_indexing().id(e));
+    return t.first != t.second ? m_state.alpha_e[t.first] : m_state.alpha_e[working_edge(e)];
+  }
+  /// The weight `w(e) = Similarity(e) - alpha_e Award(e)` of an edge; of a crease edge,
+  /// the weight of cutting along it (its two ties).
+  double weight(edge_descriptor e) const
+  {
+    const auto t = ties_of(input_indexing().id(e));
+    if(t.first == t.second) return weight(working_edge(e));
+    double w = 0;
+    for(std::size_t i = t.first; i < t.second; ++i) w += weight(i);
+    return w;
+  }
+  /// Whether an edge is a feature edge (a crease, or from the feature lines, the user or
+  /// a sketch).
+  bool is_feature_edge(edge_descriptor e) const
+  {
+    return is_crease_edge(e) || m_data.is_feature_edge[working_edge(e)] != 0;
+  }
+  /// Whether an edge is a crease: its dihedral angle is at least `crease_angle`.
+  bool is_crease_edge(edge_descriptor e) const
+  {
+    return m_work->cut.is_cut() && m_work->cut.is_crease[input_indexing().id(e)] != 0;
+  }
+  /// The number of crease edges.
+  std::size_t number_of_crease_edges() const { return m_work->cut.number_of_creases; }
+  /// The mesh the segmentation works on: the input mesh, or when it has creases, a copy
+  /// of it cut open along them (a vertex on a crease has one copy per side; the faces are
+  /// those of the input, in the same order). `feature_lines()` and `patch_boundaries()`
+  /// live on it; the patch boundaries along creases are borders of it, not curves.
+  const TriangleMesh& working_mesh() const { return m_data.idx.mesh(); }
+  /// The feature lines (detected or given) on `working_mesh()`, without the sketches and
+  /// without the creases.
   const Feature_lines<TriangleMesh>& feature_lines() const { return m_lines; }
   /// The boundaries between the current patches as curves on the surface, carrying the
   /// anisotropic metric of the weights, ready for `smooth_patch_boundaries()` and for the
-  /// per-face patches of `face_patches.h`. Built from this object's precomputation (no
-  /// curvature or feature recomputed); the result must not outlive this object.
+  /// per-face patches of `face_patches.h`, on `working_mesh()`. Built from this object's
+  /// precomputation (no curvature or feature recomputed); the result must not outlive
+  /// this object.
   Patch_boundaries<TriangleMesh> patch_boundaries() const
   {
     return internal::make_patch_boundaries(m_data, m_state.labels);
@@ -267,7 +314,7 @@ public:
       const Eigen::Vector3d q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
       if(!q.allFinite()) throw Invalid_input("a sketch point has a NaN or infinite coordinate");
       check_face(sp.face);
-      in.push_back({m_data.idx.id(sp.face), q});
+      in.push_back({m_data.idx.id(working_face(sp.face)), q});
       // a point far from its face is a caller's mistake, and would make the walk endless
       if(internal::distance_to_face(m_data, in.back()) > 0.01 * m_data.diagonal)
         throw Invalid_input("a sketch point lies farther than 1% of the bounding-box diagonal from its face");
@@ -436,7 +483,7 @@ private:
     for(face_descriptor f : faces)
     {
       check_face(f);
-      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      for(auto h : CGAL::halfedges_around_face(halfedge(working_face(f), tm), tm))
         touched.insert(m_state.labels[m_data.idx.id(target(h, tm))]);
     }
     return touched;
@@ -452,9 +499,12 @@ private:
     transaction([&] {
       std::vector<char> done(m_state.alpha_e.size(), 0);
       for(face_descriptor f : faces)
-        for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+        for(auto h : CGAL::halfedges_around_face(halfedge(working_face(f), tm), tm))
         {
           const std::size_t e = m_data.idx.edge_id(h);
+          const auto t = m_work->cut.is_cut() ? ties_of(m_work->cut.input_edge[e]) : std::make_pair(e, e);
+          for(std::size_t i = t.first; i < t.second; ++i) // a crease's ties
+            if(!done[i]) { done[i] = 1; m_state.alpha_e[i] = change(m_state.alpha_e[i]); }
           if(!m_data.is_feature_edge[e] || done[e]) continue;
           done[e] = 1;
           m_state.alpha_e[e] = change(m_state.alpha_e[e]);
@@ -532,9 +582,165 @@ private:
     solve(&in);
   }
 
-  internal::Segmentation_data<TriangleMesh> m_data;
-  Feature_lines<TriangleMesh> m_lines;
+  // The input's indexing and crease cut; shared by copies (never changed after
+  // construction), so the working mesh that m_data refers to stays where it is.
+  struct Working
+  {
+    std::unique_ptr<internal::Mesh_indexing<TriangleMesh> > input_idx; // only when cut
+    internal::Crease_cut<TriangleMesh> cut;
+  };
+
+  template <typename NamedParameters>
+  static std::shared_ptr<const Working> make_working(const TriangleMesh& tm, const NamedParameters& np,
+                                                     const internal::Segmentation_options& opt)
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                get_const_property_map(CGAL::vertex_point, tm));
+    auto w = std::make_shared<Working>();
+    if(opt.crease_angle >= 180) return w;
+    check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
+    auto idx = std::make_unique<internal::Mesh_indexing<TriangleMesh> >(tm);
+    internal::compute_crease_cut(*idx, vpm, opt.crease_angle, opt.gamma, w->cut);
+    if(w->cut.is_cut()) w->input_idx = std::move(idx);
+    return w;
+  }
+
+  const internal::Mesh_indexing<TriangleMesh>& input_indexing() const
+  {
+    return m_work->cut.is_cut() ? *m_work->input_idx : m_data.idx;
+  }
+  std::size_t working_vertex(std::size_t input_vertex) const
+  {
+    return m_work->cut.is_cut() ? m_work->cut.working_vertex[input_vertex] : input_vertex;
+  }
+  std::size_t working_vertex(vertex_descriptor v) const { return working_vertex(input_indexing().id(v)); }
+  face_descriptor working_face(face_descriptor f) const
+  {
+    return m_work->cut.is_cut() ? m_data.idx.face_at(m_work->input_idx->id(f)) : f;
+  }
+  std::size_t working_edge(edge_descriptor e) const
+  {
+    if(!m_work->cut.is_cut()) return m_data.idx.id(e);
+    const internal::Mesh_indexing<TriangleMesh>& in = *m_work->input_idx;
+    return m_work->cut.working_halfedge[in.halfedge_id(halfedge(e, in.mesh()))] / 2;
+  }
+  typename boost::graph_traits<TriangleMesh>::halfedge_descriptor working_halfedge_at(std::size_t id) const
+  {
+    const auto h = halfedge(m_data.idx.edge_at(id / 2), m_data.idx.mesh());
+    return (id % 2 == 0) ? h : opposite(h, m_data.idx.mesh());
+  }
+  // The ties of an input edge, as a range of indices into the weight terms (empty if it
+  // is not a crease, or without cut).
+  std::pair<std::size_t, std::size_t> ties_of(std::size_t input_edge) const
+  {
+    if(m_tie_begin.empty()) return { 0, 0 };
+    return { m_first_tie + m_tie_begin[input_edge], m_first_tie + m_tie_begin[input_edge + 1] };
+  }
+
+  // The precomputation on the working mesh: the user's vertex point map, curvature map,
+  // feature edges, feature lines and edge alphas, given for the input mesh, are carried
+  // over to its cut copy; then the ties are appended to the weight terms as extra edges
+  // of the vertex graph (feature edges with the crease's alpha).
+  template <typename NamedParameters>
+  void prepare(const TriangleMesh& tm, const NamedParameters& np)
+  {
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::get_parameter_reference;
+    using CGAL::parameters::is_default_parameter;
+    if(!m_work->cut.is_cut())
+    {
+      internal::prepare_segmentation_data(tm, np, m_opt, m_data, m_lines);
+      m_state.alpha_e = internal::edge_alphas(m_data, m_opt, np);
+      m_first_tie = m_data.edge_vertices.size();
+      return;
+    }
+    const TriangleMesh& wm = *m_work->cut.mesh;
+    const internal::Crease_cut<TriangleMesh>& cut = m_work->cut;
+    const internal::Mesh_indexing<TriangleMesh>& in = *m_work->input_idx;
+    const internal::Mesh_indexing<TriangleMesh>& wi = m_data.idx;
+    auto wvpm = get_const_property_map(CGAL::vertex_point, wm);
+    const Named_function_parameters<decltype(wvpm), CGAL::internal_np::vertex_point_t, NamedParameters> np1(wvpm, np);
+
+    auto with_lines = [&](const auto& np3) {
+      typedef std::decay_t<decltype(np3)> NP3;
+      if constexpr(is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value)
+        internal::prepare_segmentation_data(wm, np3, m_opt, m_data, m_lines);
+      else
+      {
+        Feature_lines<TriangleMesh> lines = get_parameter_reference(np, internal_np::feature_lines);
+        for(auto& l : lines.lines)
+          for(auto& p : l.points)
+            p.halfedge = working_halfedge_at(cut.working_halfedge[in.halfedge_id(p.halfedge)]);
+        const Named_function_parameters<Feature_lines<TriangleMesh>, internal_np::feature_lines_t, NP3> np4(lines, np3);
+        internal::prepare_segmentation_data(wm, np4, m_opt, m_data, m_lines);
+      }
+    };
+    auto with_features = [&](const auto& np2) {
+      typedef std::decay_t<decltype(np2)> NP2;
+      if constexpr(is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+        with_lines(np2);
+      else
+      {
+        auto user = get_parameter(np, internal_np::edge_is_feature);
+        auto map = get(CGAL::dynamic_edge_property_t<bool>(), wm);
+        for(std::size_t e = 0; e < wi.number_of_edges(); ++e)
+          put(map, wi.edge_at(e), bool(get(user, in.edge_at(cut.input_edge[e]))));
+        with_lines(Named_function_parameters<decltype(map), internal_np::edge_is_feature_t, NP2>(map, np2));
+      }
+    };
+    if constexpr(is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
+      with_features(np1);
+    else
+    {
+      auto user = get_parameter(np, internal_np::principal_curvature_map);
+      typedef typename boost::property_traits<decltype(user)>::value_type Curvature;
+      auto map = get(CGAL::dynamic_vertex_property_t<Curvature>(), wm);
+      for(std::size_t v = 0; v < wi.number_of_vertices(); ++v)
+        put(map, wi.vertex_at(v), get(user, in.vertex_at(cut.input_vertex[v])));
+      with_features(Named_function_parameters<decltype(map), internal_np::principal_curvature_map_t,
+                                              std::decay_t<decltype(np1)> >(map, np1));
+    }
+
+    // alpha_e of the working edges, then the ties
+    std::vector<double> alpha_e = m_data.default_alpha(m_opt.alpha);
+    auto user_alpha = [&](std::size_t input_edge) {
+      if constexpr(is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
+        return m_opt.alpha;
+      else
+      {
+        const double a = get(get_parameter(np, internal_np::edge_alpha), in.edge_at(input_edge));
+        if(!std::isfinite(a)) throw Invalid_input("edge_alpha_map holds a value that is not a finite number");
+        return a;
+      }
+    };
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
+      for(std::size_t e = 0; e < alpha_e.size(); ++e) alpha_e[e] = user_alpha(cut.input_edge[e]);
+    m_first_tie = m_data.edge_vertices.size();
+    m_tie_begin.assign(in.number_of_edges() + 1, 0);
+    for(const internal::Crease_tie& t : cut.ties) ++m_tie_begin[t.crease_edge + 1];
+    for(std::size_t e = 0; e < in.number_of_edges(); ++e) m_tie_begin[e + 1] += m_tie_begin[e];
+    for(const internal::Crease_tie& t : cut.ties) // in crease-edge order
+    {
+      m_data.edge_vertices.emplace_back(t.a, t.b);
+      m_data.terms.similarity.push_back(t.similarity);
+      m_data.terms.award.push_back(t.award);
+      m_data.is_feature_edge.push_back(1);
+      alpha_e.push_back(user_alpha(t.crease_edge));
+    }
+    m_data.number_of_feature_edges =
+      std::size_t(std::count(m_data.is_feature_edge.begin(), m_data.is_feature_edge.begin() + m_first_tie, 1)) +
+      cut.number_of_creases;
+    m_state.alpha_e.swap(alpha_e);
+  }
+
   internal::Segmentation_options m_opt;
+  std::shared_ptr<const Working> m_work;
+  internal::Segmentation_data<TriangleMesh> m_data;
+  std::size_t m_first_tie = 0;           // index of the first tie in the weight terms
+  std::vector<std::size_t> m_tie_begin;  // per input edge: its ties, CSR (empty without cut)
+  Feature_lines<TriangleMesh> m_lines;
   bool m_anisotropic = true, m_reduced = true;
   std::function<std::size_t(const Correlation_clustering_graph&, std::vector<std::size_t>&)> m_solver;
   State m_state;

@@ -32,6 +32,7 @@ struct Segmentation_options
 {
   double alpha = 0.6;
   double gamma = 0.05;
+  double crease_angle = 20.; // degrees; >= 180: no creases (the paper's pipeline)
 
   void check() const
   {
@@ -39,6 +40,9 @@ struct Segmentation_options
       throw Invalid_input("alpha must be a finite number (got " + std::to_string(alpha) + ")");
     if(!(gamma >= 0) || !std::isfinite(gamma))
       throw Invalid_input("gamma must be a finite number >= 0 (got " + std::to_string(gamma) + ")");
+    if(!(crease_angle > 0) || !std::isfinite(crease_angle))
+      throw Invalid_input("crease_angle must be a finite number of degrees > 0 (180 or more: no creases; got " +
+                          std::to_string(crease_angle) + ")");
   }
 };
 

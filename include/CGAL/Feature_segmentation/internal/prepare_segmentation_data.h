@@ -26,6 +26,7 @@ Segmentation_options read_segmentation_options(const NamedParameters& np)
   Segmentation_options opt;
   opt.alpha = choose_parameter(get_parameter(np, internal_np::alpha), opt.alpha);
   opt.gamma = choose_parameter(get_parameter(np, internal_np::gamma), opt.gamma);
+  opt.crease_angle = choose_parameter(get_parameter(np, internal_np::crease_angle), opt.crease_angle);
   opt.check();
   return opt;
 }

@@ -1,0 +1,297 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sharp creases of CAD tessellations (edges whose two faces bend by more than an angle)
+// and the working mesh the segmentation runs on when there are any: a copy of the input
+// cut open along its creases, each vertex split into one copy per sector of faces that
+// no crease separates. On the cut copy every stage of the paper (curvature fits, crest
+// lines, weights, watershed) sees one side of a crease at a time, so thin walls and
+// slots keep their two sides apart, and a face's three corners lie on its own side.
+// The two sides of a crease are tied back by "ties": a pair of vertex copies per crease
+// edge end, whose weight rewards cutting along the crease (see Crease_tie).
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_CUT_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_CUT_H
+
+#include <CGAL/Feature_segmentation/input_checks.h>
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+// The dihedral angle of every edge, in degrees (0 for a border edge or next to a
+// degenerate face): the angle between the normals of its two faces.
+template <typename TriangleMesh, typename VPM>
+std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, VPM vpm)
+{
+  const TriangleMesh& tm = idx.mesh();
+  std::vector<Eigen::Vector3d> normal(idx.number_of_faces(), Eigen::Vector3d::Zero());
+  for(std::size_t f = 0; f < normal.size(); ++f)
+  {
+    std::array<Eigen::Vector3d, 3> p;
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      const auto& q = get(vpm, target(h, tm));
+      p[k++] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+      if(k == 3) break;
+    }
+    const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double len = n.norm();
+    if(len > 0 && std::isfinite(len)) normal[f] = n / len;
+  }
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  for(std::size_t e = 0; e < angle.size(); ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
+    if(f == idx.npos || g == idx.npos) continue;
+    if(normal[f].squaredNorm() == 0 || normal[g].squaredNorm() == 0) continue;
+    const double c = (std::max)(-1., (std::min)(1., normal[f].dot(normal[g])));
+    angle[e] = std::acos(c) * 180. / 3.14159265358979323846;
+  }
+  return angle;
+}
+
+// One end of a crease edge: the two copies of the end vertex on the two sides. Cutting
+// the tie puts the patch boundary along the half of the crease edge next to that end.
+// Its terms follow Eq. 3-6 with the crease as the feature: Award is the Euclidean length
+// of that boundary piece (half the edge); Similarity is its length in the anisotropic
+// metric, in which a boundary running along a bend of curvature s shrinks by
+// 1 / (1 + gamma s) (Eq. 6). Across a crease a curvature fit means nothing, so s is the
+// crease's own: its dihedral angle spread over crease_bend_width, on the mesh scaled to a
+// largest bounding-box side of 1 (the scale gamma is given for).
+struct Crease_tie
+{
+  std::size_t a = 0, b = 0;    // working-mesh vertex indices, a < b
+  std::size_t crease_edge = 0; // input edge index
+  double similarity = 0, award = 0;
+};
+
+// The width, relative to the largest side of the bounding box, over which a crease's
+// dihedral angle is spread to give it a curvature (Crease_tie).
+constexpr double crease_bend_width = 0.01;
+
+// The cut copy and the maps between it and the input. Indices are those of
+// Mesh_indexing on each mesh; faces keep their index.
+template <typename TriangleMesh>
+struct Crease_cut
+{
+  std::unique_ptr<TriangleMesh> mesh;             // the working mesh (null: no crease)
+  std::vector<char> is_crease;                    // per input edge
+  std::size_t number_of_creases = 0;
+  std::vector<std::size_t> input_vertex;          // per working vertex: the input vertex it copies
+  std::vector<std::size_t> working_vertex;        // per input vertex: its copy in its first face's sector
+  std::vector<std::size_t> working_halfedge;      // per input halfedge: the working halfedge
+  std::vector<std::size_t> input_edge;            // per working edge: the input edge
+  std::vector<Crease_tie> ties;
+
+  bool is_cut() const { return mesh != nullptr; }
+};
+
+// Marks the creases of `tm` (dihedral angle >= crease_angle degrees; none if
+// crease_angle >= 180) and, if there are any, builds the cut copy and its maps.
+// `work_indexing` is called with the working mesh to get its Mesh_indexing, which the
+// caller keeps (the halfedge numbering of the maps is that one's).
+template <typename TriangleMesh, typename VPM>
+void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, double gamma,
+                        Crease_cut<TriangleMesh>& cut)
+{
+  typedef boost::graph_traits<TriangleMesh> GTr;
+  typedef typename GTr::vertex_descriptor vertex_descriptor;
+  typedef typename GTr::halfedge_descriptor halfedge_descriptor;
+  typedef typename GTr::face_descriptor face_descriptor;
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces(), ne = idx.number_of_edges();
+
+  cut = Crease_cut<TriangleMesh>();
+  cut.is_crease.assign(ne, 0);
+  if(crease_angle < 180)
+  {
+    const std::vector<double> angle = dihedral_angles(idx, vpm);
+    for(std::size_t e = 0; e < ne; ++e)
+      if(angle[e] >= crease_angle) { cut.is_crease[e] = 1; ++cut.number_of_creases; }
+  }
+  if(cut.number_of_creases == 0) return;
+
+  // Corners (face, k-th halfedge of the face, at its target) joined across every
+  // non-crease interior edge: the classes are the sectors, the vertices of the cut copy.
+  std::vector<std::size_t> corner_vertex(3 * nf), parent(3 * nf);
+  std::vector<std::size_t> corner_of_halfedge(2 * ne, std::size_t(-1));
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    int k = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      corner_vertex[3 * f + k] = idx.id(target(h, tm));
+      corner_of_halfedge[idx.halfedge_id(h)] = 3 * f + k;
+      ++k;
+    }
+  }
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&parent](std::size_t x) {
+    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
+    return x;
+  };
+  auto unite = [&](std::size_t a, std::size_t b) {
+    a = find(a); b = find(b);
+    if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+  };
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    if(cut.is_crease[e]) continue;
+    const halfedge_descriptor h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
+    if(is_border(h, tm) || is_border(o, tm)) continue;
+    // h's corner is at target(h); the corner of o's face at target(h) is at
+    // target(prev(o)) = source(o) = target(h)
+    unite(corner_of_halfedge[idx.halfedge_id(h)], corner_of_halfedge[idx.halfedge_id(prev(o, tm))]);
+    unite(corner_of_halfedge[idx.halfedge_id(o)], corner_of_halfedge[idx.halfedge_id(prev(h, tm))]);
+  }
+
+  // Working vertices in the order of the corners' classes (deterministic).
+  std::vector<std::size_t> class_vertex(3 * nf, std::size_t(-1));
+  std::vector<std::size_t> corner_working(3 * nf);
+  cut.working_vertex.assign(nv, std::size_t(-1));
+  for(std::size_t c = 0; c < 3 * nf; ++c)
+  {
+    const std::size_t r = find(c);
+    if(class_vertex[r] == std::size_t(-1))
+    {
+      class_vertex[r] = cut.input_vertex.size();
+      cut.input_vertex.push_back(corner_vertex[c]);
+    }
+    corner_working[c] = class_vertex[r];
+    if(cut.working_vertex[corner_vertex[c]] == std::size_t(-1))
+      cut.working_vertex[corner_vertex[c]] = corner_working[c];
+  }
+  // an isolated input vertex (documented: a patch of its own) keeps a copy
+  for(std::size_t v = 0; v < nv; ++v)
+    if(cut.working_vertex[v] == std::size_t(-1))
+    {
+      cut.working_vertex[v] = cut.input_vertex.size();
+      cut.input_vertex.push_back(v);
+    }
+
+  // The cut copy, built face by face in the input's face order.
+  cut.mesh = std::make_unique<TriangleMesh>();
+  TriangleMesh& wm = *cut.mesh;
+  auto wvpm = get(CGAL::vertex_point, wm);
+  typedef typename boost::property_traits<decltype(wvpm)>::value_type WPoint;
+  std::vector<vertex_descriptor> wv(cut.input_vertex.size());
+  for(std::size_t i = 0; i < wv.size(); ++i)
+  {
+    const auto& p = get(vpm, idx.vertex_at(cut.input_vertex[i]));
+    wv[i] = add_vertex(wm);
+    put(wvpm, wv[i], WPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+  }
+  std::vector<face_descriptor> wf(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    std::array<vertex_descriptor, 3> t = { wv[corner_working[3 * f]], wv[corner_working[3 * f + 1]],
+                                           wv[corner_working[3 * f + 2]] };
+    wf[f] = CGAL::Euler::add_face(t, wm);
+    if(wf[f] == GTr::null_face())
+      throw Invalid_input("the mesh cannot be cut along its creases (a non-manifold configuration)");
+  }
+  CGAL_postcondition(CGAL::is_valid_polygon_mesh(wm));
+
+  // Halfedge and edge maps, through a temporary indexing of the working mesh (the
+  // caller's indexing of it numbers its elements in the same iteration order).
+  const Mesh_indexing<TriangleMesh> widx(wm);
+  CGAL_postcondition(widx.number_of_faces() == nf);
+  cut.working_halfedge.assign(2 * ne, std::size_t(-1));
+  cut.input_edge.assign(widx.number_of_edges(), std::size_t(-1));
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    CGAL_postcondition(widx.id(wf[f]) == f);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      const std::size_t target_copy = corner_working[corner_of_halfedge[idx.halfedge_id(h)]];
+      for(halfedge_descriptor w : CGAL::halfedges_around_face(halfedge(wf[f], wm), wm))
+        if(widx.id(target(w, wm)) == target_copy)
+        {
+          cut.working_halfedge[idx.halfedge_id(h)] = widx.halfedge_id(w);
+          cut.input_edge[widx.edge_id(w)] = idx.edge_id(h);
+        }
+    }
+  }
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const halfedge_descriptor h = halfedge(idx.edge_at(e), tm);
+    for(halfedge_descriptor x : { h, opposite(h, tm) })
+      if(is_border(x, tm))
+      {
+        // a border halfedge of the input: the opposite of its twin's copy
+        const std::size_t w = cut.working_halfedge[idx.halfedge_id(opposite(x, tm))];
+        cut.working_halfedge[idx.halfedge_id(x)] = w ^ std::size_t(1);
+      }
+  }
+  for(std::size_t e = 0; e < widx.number_of_edges(); ++e)
+    if(cut.input_edge[e] == std::size_t(-1))
+    {
+      // the border copy of a crease side: the input edge of its twin
+      const halfedge_descriptor h = halfedge(widx.edge_at(e), wm);
+      const halfedge_descriptor x = is_border(h, wm) ? opposite(h, wm) : h;
+      CGAL_assertion(!is_border(x, wm));
+      // its face's input halfedges map to it; find the input edge through the face
+      const std::size_t f = widx.face_id(x);
+      for(halfedge_descriptor ih : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+        if(cut.working_halfedge[idx.halfedge_id(ih)] == widx.halfedge_id(x))
+          cut.input_edge[e] = idx.edge_id(ih);
+    }
+
+  // Ties, two per crease edge (one per end), with their terms.
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+  std::vector<Eigen::Vector3d> p(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const auto& q = get(vpm, idx.vertex_at(v));
+    p[v] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+    lo = lo.cwiseMin(p[v]);
+    hi = hi.cwiseMax(p[v]);
+  }
+  const double largest_side = (hi - lo).maxCoeff();
+  const std::vector<double> angle = dihedral_angles(idx, vpm);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    if(!cut.is_crease[e]) continue;
+    const halfedge_descriptor h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
+    const double half = 0.5 * (p[idx.id(source(h, tm))] - p[idx.id(target(h, tm))]).norm();
+    const double s = (largest_side > 0) ? (angle[e] * 3.14159265358979323846 / 180.) / crease_bend_width : 0.;
+    // the copies of target(h) on h's side and on o's side (the corner of o's face at
+    // target(h) is that of prev(o)); likewise for source(h)
+    const std::size_t ends[2][2] = {
+      { corner_working[corner_of_halfedge[idx.halfedge_id(h)]], corner_working[corner_of_halfedge[idx.halfedge_id(prev(o, tm))]] },
+      { corner_working[corner_of_halfedge[idx.halfedge_id(o)]], corner_working[corner_of_halfedge[idx.halfedge_id(prev(h, tm))]] } };
+    for(const auto& end : ends)
+    {
+      if(end[0] == end[1]) continue; // a crease end inside a sector: nothing to tie
+      Crease_tie t;
+      t.a = (std::min)(end[0], end[1]);
+      t.b = (std::max)(end[0], end[1]);
+      t.crease_edge = e;
+      t.award = half;
+      t.similarity = half / (1. + gamma * s);
+      cut.ties.push_back(t);
+    }
+  }
+}
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_CUT_H
