@@ -84,6 +84,7 @@ struct Options
   // The library's defaults for alpha and gamma (segment_along_features()).
   double alpha = 0.6;
   double gamma = 0.05;
+  double crease_angle = 20.; // the library's default (Feature_aligned_segmentation)
   std::string solver = "gaec+klj";
   bool full_graph = false;
   std::string watershed = "anisotropic";
@@ -149,6 +150,10 @@ void print_usage(std::ostream& os)
      << "  --alpha X                 weight of the feature lines, any finite number; larger\n"
      << "                            gives more patches, useful range 0.5 to 1 (default: 0.6)\n"
      << "  --gamma X                 anisotropy of the metric, X >= 0 (default: 0.05)\n"
+     << "  --crease-angle D          edges whose faces bend by D degrees or more are creases:\n"
+     << "                            the mesh is cut open along them and their sides tied by\n"
+     << "                            crease weights; 180 or more: none, the paper's method\n"
+     << "                            (default: 20)\n"
      << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
      << "                            edge contraction, then Kernighan-Lin with joins),\n"
      << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"
@@ -304,6 +309,13 @@ Options parse_command_line(int argc, char** argv)
       options.gamma = parse_double(arg, text);
       if(options.gamma < 0)
         throw Usage_error("--gamma must be >= 0 (got '" + text + "')");
+    }
+    else if(arg == "--crease-angle")
+    {
+      const std::string text = take_value();
+      options.crease_angle = parse_double(arg, text);
+      if(!(options.crease_angle > 0))
+        throw Usage_error("--crease-angle must be > 0 degrees (got '" + text + "')");
     }
     else if(arg == "--solver")
     {
@@ -470,6 +482,7 @@ struct Results
   std::size_t number_of_edges = 0;
   std::size_t number_of_faces = 0;
   std::size_t number_of_feature_edges = 0;
+  std::size_t number_of_crease_edges = 0;
   std::size_t number_of_ridges = 0;
   std::size_t number_of_valleys = 0;
   std::size_t number_of_user_lines = 0;
@@ -512,6 +525,7 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
                                             : json_string(options.feature_edges_file)) << ",\n"
      << "    \"alpha\": " << json_number(options.alpha) << ",\n"
      << "    \"gamma\": " << json_number(options.gamma) << ",\n"
+     << "    \"crease_angle\": " << json_number(options.crease_angle) << ",\n"
      << "    \"full_graph\": " << (options.full_graph ? "true" : "false") << ",\n"
      << "    \"watershed\": " << json_string(options.watershed) << ",\n"
      << "    \"edits_file\": "
@@ -542,6 +556,7 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "    \"user\": " << r.number_of_user_lines << "\n"
      << "  },\n"
      << "  \"feature_edges\": " << r.number_of_feature_edges << ",\n"
+     << "  \"crease_edges\": " << r.number_of_crease_edges << ",\n"
      << "  \"segmentation\": {\n"
      << "    \"patches\": " << r.number_of_patches << ",\n"
      << "    \"cut_cost\": " << json_number(r.cut_cost) << ",\n"
@@ -642,57 +657,62 @@ int run(const Options& options)
     std::cerr << "mesh: " << results.number_of_vertices << " vertices, "
               << results.number_of_faces << " faces" << std::endl;
 
-  auto curvature_map =
-    mesh.add_property_map<Mesh::Vertex_index, FS::Principal_curvatures<K> >(
-      "v:fs_principal_curvatures").first;
-  timer.run("curvature", [&]() {
-    FS::estimate_principal_curvatures(mesh, curvature_map,
-                                      FS::parameters::neighborhood_rings(options.rings));
-  });
-
-  FS::Feature_lines<Mesh> lines = timer.run("feature_lines", [&]() {
-    FS::Feature_lines<Mesh> detected;
-    if(options.ridges || options.valleys)
-      detected = FS::detect_crest_lines(
-        mesh, curvature_map,
-        FS::parameters::strength_threshold(
-          options.strength_threshold ? *options.strength_threshold
-                                     : FS::default_strength_threshold)
-          .detect_ridges(options.ridges)
-          .detect_valleys(options.valleys));
-    if(!options.feature_edges_file.empty())
-      results.number_of_user_lines =
-        fs_demo::read_user_feature_lines(options.feature_edges_file, mesh, detected);
-    return detected;
-  });
-  results.number_of_ridges = lines.number_of_lines(FS::Feature_line_type::RIDGE);
-  results.number_of_valleys = lines.number_of_lines(FS::Feature_line_type::VALLEY);
-  results.number_of_lines = lines.lines.size();
-  auto edge_is_feature = mesh.add_property_map<Mesh::Edge_index, bool>("e:fs_is_feature").first;
-  results.number_of_feature_edges = FS::mark_feature_edges(mesh, lines, edge_is_feature);
-  if(!options.quiet)
-    std::cerr << "feature lines: " << results.number_of_ridges << " ridges, "
-              << results.number_of_valleys << " valleys, " << results.number_of_user_lines
-              << " user; " << results.number_of_feature_edges << " feature edges" << std::endl;
-
-  // The curvature and the lines (detected and the user's) of the stages above, so that
-  // this stage times the weights and the solve only.
-  // The class keeps the precomputation for the edits (segment_along_features() is its
-  // one-shot use: the same result without edits).
+  // The segmentation class detects the curvature and the crest lines itself, on the
+  // mesh cut open along its creases (working_mesh()), where the fits see one side of a
+  // crease at a time. User feature lines (--feature-edges) are located on the input mesh
+  // and added to the lines detected there, as before creases existed.
   typedef FS::Feature_aligned_segmentation<Mesh> Segmentation;
   double last_solver_seconds = 0; // written by the solver at each solve
   std::optional<Segmentation> segmentation;
-  timer.run("segmentation", [&]() {
-    segmentation.emplace(
-      mesh, FS::parameters::alpha(options.alpha)
-              .gamma(options.gamma)
-              .principal_curvature_map(curvature_map)
-              .feature_lines(std::cref(lines))
-              .solver(Timed_solver(options.solver, last_solver_seconds))
-              .use_oversegmentation(!options.full_graph)
-              .watershed_distance(options.watershed == "geodesic" ? FS::Watershed_distance::GEODESIC
-                                                                  : FS::Watershed_distance::ANISOTROPIC));
-  });
+  const auto common = FS::parameters::alpha(options.alpha)
+                        .gamma(options.gamma)
+                        .crease_angle(options.crease_angle)
+                        .neighborhood_rings(options.rings)
+                        .strength_threshold(options.strength_threshold ? *options.strength_threshold
+                                                                       : FS::default_strength_threshold)
+                        .detect_ridges(options.ridges)
+                        .detect_valleys(options.valleys)
+                        .solver(Timed_solver(options.solver, last_solver_seconds))
+                        .use_oversegmentation(!options.full_graph)
+                        .watershed_distance(options.watershed == "geodesic" ? FS::Watershed_distance::GEODESIC
+                                                                            : FS::Watershed_distance::ANISOTROPIC);
+  if(!options.feature_edges_file.empty())
+  {
+    auto curvature_map =
+      mesh.add_property_map<Mesh::Vertex_index, FS::Principal_curvatures<K> >("v:fs_principal_curvatures").first;
+    timer.run("curvature", [&]() {
+      FS::estimate_principal_curvatures(mesh, curvature_map, FS::parameters::neighborhood_rings(options.rings));
+    });
+    FS::Feature_lines<Mesh> lines = timer.run("feature_lines", [&]() {
+      FS::Feature_lines<Mesh> detected;
+      if(options.ridges || options.valleys)
+        detected = FS::detect_crest_lines(
+          mesh, curvature_map,
+          FS::parameters::strength_threshold(options.strength_threshold ? *options.strength_threshold
+                                                                        : FS::default_strength_threshold)
+            .detect_ridges(options.ridges)
+            .detect_valleys(options.valleys));
+      results.number_of_user_lines = fs_demo::read_user_feature_lines(options.feature_edges_file, mesh, detected);
+      return detected;
+    });
+    timer.run("segmentation", [&]() {
+      segmentation.emplace(mesh, common.principal_curvature_map(curvature_map).feature_lines(std::cref(lines)));
+    });
+  }
+  else
+    timer.run("segmentation", [&]() { segmentation.emplace(mesh, common); });
+  const FS::Feature_lines<Mesh>& lines = segmentation->feature_lines();
+  const Mesh& working_mesh = segmentation->working_mesh();
+  results.number_of_ridges = lines.number_of_lines(FS::Feature_line_type::RIDGE);
+  results.number_of_valleys = lines.number_of_lines(FS::Feature_line_type::VALLEY);
+  results.number_of_lines = lines.lines.size();
+  results.number_of_feature_edges = segmentation->number_of_feature_edges();
+  results.number_of_crease_edges = segmentation->number_of_crease_edges();
+  if(!options.quiet)
+    std::cerr << "feature lines: " << results.number_of_ridges << " ridges, "
+              << results.number_of_valleys << " valleys, " << results.number_of_user_lines
+              << " user; " << results.number_of_crease_edges << " crease edges; "
+              << results.number_of_feature_edges << " feature edges" << std::endl;
   results.solver_seconds = last_solver_seconds;
   results.number_of_automatic_patches = results.number_of_patches = segmentation->number_of_patches();
   results.automatic_cut_cost = results.cut_cost = segmentation->cut_cost();
@@ -768,9 +788,9 @@ int run(const Options& options)
   const sfs::path dir(options.output_dir);
   timer.run("write", [&]() {
     write_file(dir / "feature_lines.polylines.txt",
-               [&](std::ostream& os) { FS::write_polylines(os, mesh, lines); });
+               [&](std::ostream& os) { FS::write_polylines(os, working_mesh, lines); });
     write_file(dir / "feature_lines.obj",
-               [&](std::ostream& os) { FS::write_OBJ_lines(os, mesh, lines); });
+               [&](std::ostream& os) { FS::write_OBJ_lines(os, working_mesh, lines); });
     write_file(dir / "segmentation.ply",
                [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); });
     write_file(dir / "boundaries.polylines.txt",

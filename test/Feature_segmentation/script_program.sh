@@ -134,7 +134,7 @@ check "fandisk: ridges + valleys + user = total" [ "$((ridges + valleys + user))
 check "fandisk: no user lines without --feature-edges" [ "$user" -eq 0 ]
 check "fandisk: feature edges counted (${fedges:-none})" [ "${fedges:-0}" -gt 0 ]
 check "fandisk: feature edges <= edges" [ "${fedges:-0}" -le "$e" ]
-for stage in load curvature feature_lines segmentation total; do
+for stage in load segmentation total; do
   check "fandisk: seconds.$stage in summary" grep -Eq "^    \"$stage\": [0-9.e+-]+,?\$" "$summary"
 done
 lines="$(wc -l < "$out/feature_lines.polylines.txt")"
@@ -304,7 +304,7 @@ first_face=$((4 + 3 * header_vertices)) # token index of face 0's vertex count
 point() { echo "$(token $((4 + 3 * $1))) $(token $((5 + 3 * $1))) $(token $((6 + 3 * $1)))"; }
 a="$(token $((first_face + 1)))"; b="$(token $((first_face + 2)))"; c="$(token $((first_face + 3)))"
 echo "3 $(point "$a") $(point "$b") $(point "$c")" > "$work/user.polylines.txt"
-run user "$fandisk" --output-dir "$work/user" --strength-threshold 1e9 --feature-edges "$work/user.polylines.txt" --quiet
+run user "$fandisk" --output-dir "$work/user" --strength-threshold 1e9 --crease-angle 180 --feature-edges "$work/user.polylines.txt" --quiet
 check "--feature-edges: exit status 0 (stderr: $(tail -n 1 "$work/user.err"))" [ "$rc" -eq 0 ]
 check "--feature-edges: 1 user line" [ "$(json_int "$work/user/summary.json" feature_lines user)" = 1 ]
 check "--feature-edges: 2 feature edges" [ "$(json_int "$work/user/summary.json" "" feature_edges)" = 2 ]
@@ -466,7 +466,7 @@ check "tetrahedron.ply: 4 faces" [ "$(json_int "$work/ply/summary.json" mesh fac
 default_oversegments="$(json_int "$summary" segmentation oversegments)"
 check "fandisk: oversegments in summary (${default_oversegments:-none}), fewer than the $v vertices" \
   [ "${default_oversegments:-0}" -ge 1 ] && [ "${default_oversegments:-0}" -lt "$v" ]
-run full_graph "$fandisk" --output-dir "$work/full_graph" --full-graph --quiet
+run full_graph "$fandisk" --output-dir "$work/full_graph" --full-graph --crease-angle 180 --quiet
 check "--full-graph: exit status 0 (stderr: $(tail -n 1 "$work/full_graph.err"))" [ "$rc" -eq 0 ]
 check "--full-graph: cut cost in summary" [ -n "$(json_number "$work/full_graph/summary.json" segmentation cut_cost)" ]
 check "--full-graph: one node per vertex (oversegments = $v)" \
@@ -497,7 +497,7 @@ merge  ball 0 0 0.3 0.25
 undo
 sketch 0.4 0.25 -0.4   0.4 0.25 0   0.4 0.25 0.4
 EOF
-run edits "$fandisk" --output-dir "$work/edits" --edits "$work/edits.txt"
+run edits "$fandisk" --output-dir "$work/edits" --crease-angle 180 --edits "$work/edits.txt"
 check "--edits: exit status 0 (stderr: $(tail -n 1 "$work/edits.err"))" [ "$rc" -eq 0 ]
 es="$work/edits/summary.json"
 # edit LINE KEY: the value of KEY in the summary's record of the edit on script line LINE.

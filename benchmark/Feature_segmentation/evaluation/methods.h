@@ -149,7 +149,8 @@ inline void derive_vertex_patches(const Mesh& mesh, Segmentation& s)
   for(auto v : vertices(mesh)) s.vertex_patch[v.idx()] = get(vp, v);
 }
 
-/// This package's segmentation at `alpha`, with the pruned (default) or unpruned lines.
+/// This package's segmentation at `alpha`, with the pruned (default) or unpruned lines,
+/// as the paper describes it (crease_angle 180: no crease cut).
 inline Segmentation run_cc(const Prepared_mesh& pm, Cc_variant variant, double alpha, bool pruned = true)
 {
   const Mesh& mesh = pm.mesh;
@@ -160,6 +161,7 @@ inline Segmentation run_cc(const Prepared_mesh& pm, Cc_variant variant, double a
   FS::segment_along_features(
     mesh, vpatch,
     FS::parameters::alpha(alpha)
+      .crease_angle(180.) // the paper's variants; the crease cut is scored by evaluate_cad_parts
       .principal_curvature_map(pm.curvature)
       .feature_lines(std::cref(lines))
       .use_oversegmentation(variant != Cc_variant::FULL_GRAPH)

@@ -195,6 +195,9 @@ public:
   {
     return m_work->cut.is_cut() && m_work->cut.is_crease[input_indexing().id(e)] != 0;
   }
+  /// The number of feature edges: the creases and the edges of `working_mesh()` that
+  /// the feature lines cross.
+  std::size_t number_of_feature_edges() const { return m_data.number_of_feature_edges; }
   /// The number of crease edges.
   std::size_t number_of_crease_edges() const { return m_work->cut.number_of_creases; }
   /// The mesh the segmentation works on: the input mesh, or when it has creases, a copy

@@ -41,7 +41,7 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, VPM 
   std::vector<Eigen::Vector3d> normal(idx.number_of_faces(), Eigen::Vector3d::Zero());
   for(std::size_t f = 0; f < normal.size(); ++f)
   {
-    std::array<Eigen::Vector3d, 3> p;
+    std::array<Eigen::Vector3d, 3> p = { Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero() };
     int k = 0;
     for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
     {

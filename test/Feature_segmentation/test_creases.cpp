@@ -1,0 +1,172 @@
+// Creases (CAD tessellations): the segmentation cut open along edges whose faces bend by
+// crease_angle or more. Boxes give exact answers: their six faces, whatever the
+// resolution and however thin the box, with every triangle on its own side.
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Feature_segmentation/segment_along_features.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
+#include "test_meshes.h"
+
+#include <map>
+#include <set>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace FS = CGAL::Feature_segmentation;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Surface_mesh<Epick::Point_3> SM;
+typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
+
+// The box [0,a]x[0,b]x[0,c], each side an n x n grid of quads split in two triangles,
+// oriented outwards. `side` receives the side (0..5) of every triangle, in face order.
+fs_test::Soup box(double a, double b, double c, int n, std::vector<int>& side)
+{
+  fs_test::Soup s;
+  std::map<std::array<int, 3>, std::size_t> id;
+  const double size[3] = { a, b, c };
+  auto point = [&](std::array<int, 3> q) {
+    auto it = id.find(q);
+    if(it != id.end()) return it->second;
+    s.points.push_back({ size[0] * q[0] / n, size[1] * q[1] / n, size[2] * q[2] / n });
+    return id[q] = s.points.size() - 1;
+  };
+  side.clear();
+  for(int d = 0; d < 3; ++d)
+    for(int far = 0; far < 2; ++far)
+    {
+      const int d1 = (d + 1) % 3, d2 = (d + 2) % 3;
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+        {
+          std::array<int, 3> p{}, q{}, r{}, t{};
+          p[d] = q[d] = r[d] = t[d] = far * n;
+          p[d1] = i;     p[d2] = j;
+          q[d1] = i + 1; q[d2] = j;
+          r[d1] = i + 1; r[d2] = j + 1;
+          t[d1] = i;     t[d2] = j + 1;
+          std::size_t v[4] = { point(p), point(q), point(r), point(t) };
+          // e1 x e2 points along +d: keep that order on the far side, reverse on the near
+          if(far) { s.faces.push_back({ v[0], v[1], v[2] }); s.faces.push_back({ v[0], v[2], v[3] }); }
+          else    { s.faces.push_back({ v[0], v[2], v[1] }); s.faces.push_back({ v[0], v[3], v[2] }); }
+          side.push_back(2 * d + far);
+          side.push_back(2 * d + far);
+        }
+    }
+  return s;
+}
+
+// Whether the face patches are exactly the box's sides: as many patches as sides, and
+// two faces share a patch if and only if they share a side.
+template <typename Mesh>
+bool patches_are_sides(const Mesh& m, const FS::Feature_aligned_segmentation<Mesh>& seg,
+                       const std::vector<int>& side)
+{
+  std::set<std::pair<std::size_t, int> > pairs;
+  std::set<std::size_t> patches;
+  std::size_t i = 0;
+  for(auto f : faces(m))
+  {
+    pairs.insert({ seg.patch(f), side[i++] });
+    patches.insert(seg.patch(f));
+  }
+  return pairs.size() == 6 && patches.size() == 6;
+}
+
+template <typename Mesh>
+void box_is_its_six_sides(double a, double b, double c, int n)
+{
+  std::vector<int> side;
+  const Mesh m = fs_test::to_mesh<Mesh>(box(a, b, c, n, side));
+  FS::Feature_aligned_segmentation<Mesh> seg(m);
+  // the 12 box edges, n mesh edges each; the flat diagonals bend by 0 degrees
+  BOOST_TEST(seg.number_of_crease_edges() == std::size_t(12 * n));
+  BOOST_TEST(seg.number_of_patches() == 6u);
+  BOOST_TEST(patches_are_sides(m, seg, side));
+  // the working mesh: the box cut open along its 12 edges, the 8 corners in 3 copies
+  // and the other box-edge vertices in 2
+  const std::size_t nv = num_vertices(m);
+  BOOST_TEST(num_vertices(seg.working_mesh()) == nv + 8 * 2 + 12 * (n - 1));
+  BOOST_TEST(num_faces(seg.working_mesh()) == num_faces(m));
+  std::size_t creases = 0;
+  for(auto e : edges(m))
+    if(seg.is_crease_edge(e))
+    {
+      ++creases;
+      // cutting along a 90 degree crease is rewarded at the default alpha
+      BOOST_TEST(seg.weight(e) < 0.);
+      BOOST_TEST(seg.alpha(e) == 0.6);
+    }
+  BOOST_TEST(creases == std::size_t(12 * n));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(creases)
+
+BOOST_AUTO_TEST_CASE(cube_at_two_resolutions_is_six_patches)
+{
+  box_is_its_six_sides<SM>(1., 1., 1., 6);
+  box_is_its_six_sides<SM>(1., 1., 1., 12); // the same shape subdivided: the same patches
+  box_is_its_six_sides<Poly>(1., 1., 1., 6);
+}
+
+// A plate 50 times thinner than wide: its rim triangles are 0.002 x 0.1, far narrower
+// than a two-ring fit, which on the uncut mesh spans both big faces.
+BOOST_AUTO_TEST_CASE(thin_plate_keeps_its_rim)
+{
+  box_is_its_six_sides<SM>(1., 1., 0.02, 10);
+  box_is_its_six_sides<Poly>(1., 0.5, 0.01, 8);
+}
+
+BOOST_AUTO_TEST_CASE(crease_ties_follow_alpha_edits)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  BOOST_TEST(seg.number_of_patches() == 6u);
+  // alpha -1: every weight (ties included) is Similarity + Award > 0: no cut pays
+  BOOST_TEST(seg.set_alpha(-1.) == 1u);
+  BOOST_TEST(seg.cut_cost() == 0.);
+  BOOST_TEST(seg.undo());
+  BOOST_TEST(seg.number_of_patches() == 6u);
+  BOOST_TEST(patches_are_sides(m, seg, side));
+  // merging two sides by a stroke over a face of each: 5 patches
+  std::vector<SM::Face_index> stroke = { *faces(m).begin(), *std::prev(faces(m).end()) };
+  BOOST_TEST(seg.merge_patches(stroke) == 5u);
+}
+
+BOOST_AUTO_TEST_CASE(crease_angle_180_is_the_papers_pipeline)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
+  FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crease_angle(180.));
+  BOOST_TEST(seg.number_of_crease_edges() == 0u);
+  BOOST_TEST(&seg.working_mesh() == &m);
+  // a 90 degree crease below the threshold counts as none
+  FS::Feature_aligned_segmentation<SM> seg95(m, FS::parameters::crease_angle(95.));
+  BOOST_TEST(seg95.number_of_crease_edges() == 0u);
+  FS::Feature_aligned_segmentation<SM> seg85(m, FS::parameters::crease_angle(85.));
+  BOOST_TEST(seg85.number_of_crease_edges() == 72u);
+}
+
+BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 2, side));
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(0.)), FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(-5.)), FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(std::nan(""))),
+                    FS::Invalid_input);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
