@@ -145,6 +145,34 @@ BOOST_AUTO_TEST_CASE(crease_ties_follow_alpha_edits)
   BOOST_TEST(seg.merge_patches(stroke) == 5u);
 }
 
+// The feature-edge count, after construction and after a sketch, is the number of input
+// edges that is_feature_edge() reports: each crease once (not once per tie).
+BOOST_AUTO_TEST_CASE(feature_edge_count_counts_creases_once)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  auto counted = [&]() {
+    std::size_t n = 0;
+    for(auto e : edges(m)) if(seg.is_feature_edge(e)) ++n;
+    return n;
+  };
+  BOOST_TEST(seg.number_of_feature_edges() == 72u); // flat sides: creases only
+  BOOST_TEST(counted() == 72u);
+  // a sketch across the top side (side 5), from the centroid of its first face to that
+  // of its last
+  std::vector<SM::Face_index> top;
+  std::size_t i = 0;
+  for(auto f : faces(m)) if(side[i++] == 5) top.push_back(f);
+  auto centroid = [&](SM::Face_index f) {
+    auto h = halfedge(f, m);
+    return CGAL::centroid(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
+  };
+  seg.add_sketch({ { top.front(), centroid(top.front()) }, { top.back(), centroid(top.back()) } });
+  BOOST_TEST(seg.number_of_feature_edges() > 72u);
+  BOOST_TEST(seg.number_of_feature_edges() == counted());
+}
+
 BOOST_AUTO_TEST_CASE(crease_angle_180_is_the_papers_pipeline)
 {
   std::vector<int> side;

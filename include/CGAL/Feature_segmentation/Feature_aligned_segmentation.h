@@ -345,8 +345,7 @@ public:
       faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
       m_data.terms.update_faces(m_data.idx, m_data.vin, m_data.is_feature_edge, m_data.point_sum,
                                 m_data.point_count, faces);
-      m_data.number_of_feature_edges =
-        std::size_t(std::count(m_data.is_feature_edge.begin(), m_data.is_feature_edge.end(), 1));
+      count_feature_edges();
       // redo the oversegmentation inside the touched patches
       std::vector<char> region(m_state.labels.size(), 0);
       for(std::size_t v = 0; v < region.size(); ++v) region[v] = touched.count(m_state.labels[v]) ? 1 : 0;
@@ -657,6 +656,7 @@ private:
       internal::prepare_segmentation_data(tm, np, m_opt, m_data, m_lines);
       m_state.alpha_e = internal::edge_alphas(m_data, m_opt, np);
       m_first_tie = m_data.edge_vertices.size();
+      count_feature_edges();
       return;
     }
     const TriangleMesh& wm = *m_work->cut.mesh;
@@ -732,10 +732,17 @@ private:
       m_data.is_feature_edge.push_back(1);
       alpha_e.push_back(user_alpha(t.crease_edge));
     }
+    count_feature_edges();
+    m_state.alpha_e.swap(alpha_e);
+  }
+
+  // The feature edges: those of the working mesh (lines, user, sketches) and the creases
+  // (each counted once, not per tie).
+  void count_feature_edges()
+  {
     m_data.number_of_feature_edges =
       std::size_t(std::count(m_data.is_feature_edge.begin(), m_data.is_feature_edge.begin() + m_first_tie, 1)) +
-      cut.number_of_creases;
-    m_state.alpha_e.swap(alpha_e);
+      m_work->cut.number_of_creases;
   }
 
   internal::Segmentation_options m_opt;

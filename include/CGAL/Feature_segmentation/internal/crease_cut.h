@@ -102,10 +102,10 @@ struct Crease_cut
   bool is_cut() const { return mesh != nullptr; }
 };
 
-// Marks the creases of `tm` (dihedral angle >= crease_angle degrees; none if
-// crease_angle >= 180) and, if there are any, builds the cut copy and its maps.
-// `work_indexing` is called with the working mesh to get its Mesh_indexing, which the
-// caller keeps (the halfedge numbering of the maps is that one's).
+// Marks the creases of the mesh of `idx` (dihedral angle >= crease_angle degrees; none
+// if crease_angle >= 180) and, if there are any, builds the cut copy, its maps and the
+// ties. Working-mesh indices are those of a Mesh_indexing of the copy (any indexing of
+// it numbers its elements in the same iteration order).
 template <typename TriangleMesh, typename VPM>
 void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, double gamma,
                         Crease_cut<TriangleMesh>& cut)
@@ -119,12 +119,10 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
 
   cut = Crease_cut<TriangleMesh>();
   cut.is_crease.assign(ne, 0);
-  if(crease_angle < 180)
-  {
-    const std::vector<double> angle = dihedral_angles(idx, vpm);
-    for(std::size_t e = 0; e < ne; ++e)
-      if(angle[e] >= crease_angle) { cut.is_crease[e] = 1; ++cut.number_of_creases; }
-  }
+  if(crease_angle >= 180) return;
+  const std::vector<double> angle = dihedral_angles(idx, vpm);
+  for(std::size_t e = 0; e < ne; ++e)
+    if(angle[e] >= crease_angle) { cut.is_crease[e] = 1; ++cut.number_of_creases; }
   if(cut.number_of_creases == 0) return;
 
   // Corners (face, k-th halfedge of the face, at its target) joined across every
@@ -208,8 +206,8 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   }
   CGAL_postcondition(CGAL::is_valid_polygon_mesh(wm));
 
-  // Halfedge and edge maps, through a temporary indexing of the working mesh (the
-  // caller's indexing of it numbers its elements in the same iteration order).
+  // Halfedge and edge maps, through a temporary indexing of the working mesh. Every
+  // working edge has a face, hence an input halfedge mapped to it.
   const Mesh_indexing<TriangleMesh> widx(wm);
   CGAL_postcondition(widx.number_of_faces() == nf);
   cut.working_halfedge.assign(2 * ne, std::size_t(-1));
@@ -239,38 +237,20 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
         cut.working_halfedge[idx.halfedge_id(x)] = w ^ std::size_t(1);
       }
   }
-  for(std::size_t e = 0; e < widx.number_of_edges(); ++e)
-    if(cut.input_edge[e] == std::size_t(-1))
-    {
-      // the border copy of a crease side: the input edge of its twin
-      const halfedge_descriptor h = halfedge(widx.edge_at(e), wm);
-      const halfedge_descriptor x = is_border(h, wm) ? opposite(h, wm) : h;
-      CGAL_assertion(!is_border(x, wm));
-      // its face's input halfedges map to it; find the input edge through the face
-      const std::size_t f = widx.face_id(x);
-      for(halfedge_descriptor ih : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-        if(cut.working_halfedge[idx.halfedge_id(ih)] == widx.halfedge_id(x))
-          cut.input_edge[e] = idx.edge_id(ih);
-    }
+  CGAL_postcondition(std::find(cut.input_edge.begin(), cut.input_edge.end(), std::size_t(-1)) == cut.input_edge.end());
 
-  // Ties, two per crease edge (one per end), with their terms.
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-  std::vector<Eigen::Vector3d> p(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    const auto& q = get(vpm, idx.vertex_at(v));
-    p[v] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    lo = lo.cwiseMin(p[v]);
-    hi = hi.cwiseMax(p[v]);
-  }
-  const double largest_side = (hi - lo).maxCoeff();
-  const std::vector<double> angle = dihedral_angles(idx, vpm);
+  // Ties, two per crease edge (one per end), with their terms. The curvature s is on the
+  // mesh scaled to a largest side of 1, where the bend spreads over crease_bend_width.
+  auto point = [&](vertex_descriptor v) {
+    const auto& q = get(vpm, v);
+    return Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+  };
   for(std::size_t e = 0; e < ne; ++e)
   {
     if(!cut.is_crease[e]) continue;
     const halfedge_descriptor h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
-    const double half = 0.5 * (p[idx.id(source(h, tm))] - p[idx.id(target(h, tm))]).norm();
-    const double s = (largest_side > 0) ? (angle[e] * 3.14159265358979323846 / 180.) / crease_bend_width : 0.;
+    const double half = 0.5 * (point(source(h, tm)) - point(target(h, tm))).norm();
+    const double s = (angle[e] * 3.14159265358979323846 / 180.) / crease_bend_width;
     // the copies of target(h) on h's side and on o's side (the corner of o's face at
     // target(h) is that of prev(o)); likewise for source(h)
     const std::size_t ends[2][2] = {
