@@ -4,8 +4,8 @@
 // mesh meshed from a B-rep, and NAME.labels, the B-rep face of every triangle), scored
 // by the boundary F-score at 1% of the bounding-box diagonal (compare_boundaries() of
 // evaluation.h, on the face patches) for:
-// - this package at its defaults (creases at 20 degrees, alpha 0.6);
-// - the paper's pipeline (crease_angle 180: crest lines only), alpha 0.6;
+// - this package with creases at 20 degrees (crease_angle(20)), alpha 0.6;
+// - the paper's pipeline (crease_angle 180, the default: crest lines only), alpha 0.6;
 // - CGAL's sharp_edges_segmentation at 20, 45 and 60 degrees;
 // each at the noise levels asked (Gaussian, along the normals, relative to the diagonal;
 // seeded). For every part it also prints the share of true boundary length whose
@@ -127,7 +127,7 @@ int main(int argc, char** argv)
   {
     std::printf("\nnoise %.2f%% of the diagonal; boundary F (patches)\n", 100 * sigma);
     std::printf("%-20s %6s %5s %6s | %-13s %-13s | %6s %6s %6s\n", "part", "faces", "true", "tang.",
-                "defaults", "paper", "sharp20", "sharp45", "sharp60");
+                "creases20", "paper", "sharp20", "sharp45", "sharp60");
     double sum[5] = { 0, 0, 0, 0, 0 };
     int n = 0;
     for(const fsys::path& obj : objs)
@@ -139,7 +139,7 @@ int main(int argc, char** argv)
       const int true_patches = *std::max_element(part.labels.begin(), part.labels.end()) + 1;
       const double tangent = tangent_continuous_share(part.mesh, part.labels);
       std::vector<std::pair<std::string, Segmentation> > runs;
-      runs.emplace_back("defaults", run_package(mesh, 20.));
+      runs.emplace_back("creases20", run_package(mesh, 20.));
       runs.emplace_back("paper", run_package(mesh, 180.));
       for(double a : { 20., 45., 60. })
         runs.emplace_back("sharp" + std::to_string(int(a)), run_sharp_edges(mesh, a));

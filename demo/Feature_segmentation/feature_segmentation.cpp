@@ -84,7 +84,7 @@ struct Options
   // The library's defaults for alpha and gamma (segment_along_features()).
   double alpha = 0.6;
   double gamma = 0.05;
-  double crease_angle = 20.; // the library's default (Feature_aligned_segmentation)
+  double crease_angle = 180.; // the library's default (Feature_aligned_segmentation): no creases
   std::string solver = "gaec+klj";
   bool full_graph = false;
   std::string watershed = "anisotropic";
@@ -153,7 +153,7 @@ void print_usage(std::ostream& os)
      << "  --crease-angle D          edges whose faces bend by D degrees or more are creases:\n"
      << "                            the mesh is cut open along them and their sides tied by\n"
      << "                            crease weights; 180 or more: none, the paper's method\n"
-     << "                            (default: 20)\n"
+     << "                            (default: 180; 20 suits clean CAD tessellations)\n"
      << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
      << "                            edge contraction, then Kernighan-Lin with joins),\n"
      << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"

@@ -1,5 +1,5 @@
 // Creases (CAD tessellations): the segmentation cut open along edges whose faces bend by
-// crease_angle or more. Boxes give exact answers: their six faces, whatever the
+// crease_angle or more (here 20 degrees; the default, 180, is none). Boxes give exact answers: their six faces, whatever the
 // resolution and however thin the box, with every triangle on its own side.
 #include <boost/test/unit_test.hpp>
 
@@ -87,7 +87,7 @@ void box_is_its_six_sides(double a, double b, double c, int n)
 {
   std::vector<int> side;
   const Mesh m = fs_test::to_mesh<Mesh>(box(a, b, c, n, side));
-  FS::Feature_aligned_segmentation<Mesh> seg(m);
+  FS::Feature_aligned_segmentation<Mesh> seg(m, FS::parameters::crease_angle(20.));
   // the 12 box edges, n mesh edges each; the flat diagonals bend by 0 degrees
   BOOST_TEST(seg.number_of_crease_edges() == std::size_t(12 * n));
   BOOST_TEST(seg.number_of_patches() == 6u);
@@ -132,7 +132,7 @@ BOOST_AUTO_TEST_CASE(crease_ties_follow_alpha_edits)
 {
   std::vector<int> side;
   const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
-  FS::Feature_aligned_segmentation<SM> seg(m);
+  FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crease_angle(20.));
   BOOST_TEST(seg.number_of_patches() == 6u);
   // alpha -1: every weight (ties included) is Similarity + Award > 0: no cut pays
   BOOST_TEST(seg.set_alpha(-1.) == 1u);
@@ -151,7 +151,7 @@ BOOST_AUTO_TEST_CASE(feature_edge_count_counts_creases_once)
 {
   std::vector<int> side;
   const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
-  FS::Feature_aligned_segmentation<SM> seg(m);
+  FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crease_angle(20.));
   auto counted = [&]() {
     std::size_t n = 0;
     for(auto e : edges(m)) if(seg.is_feature_edge(e)) ++n;
@@ -180,6 +180,10 @@ BOOST_AUTO_TEST_CASE(crease_angle_180_is_the_papers_pipeline)
   FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crease_angle(180.));
   BOOST_TEST(seg.number_of_crease_edges() == 0u);
   BOOST_TEST(&seg.working_mesh() == &m);
+  // the default: no creases
+  FS::Feature_aligned_segmentation<SM> by_default(m);
+  BOOST_TEST(by_default.number_of_crease_edges() == 0u);
+  BOOST_TEST(&by_default.working_mesh() == &m);
   // a 90 degree crease below the threshold counts as none
   FS::Feature_aligned_segmentation<SM> seg95(m, FS::parameters::crease_angle(95.));
   BOOST_TEST(seg95.number_of_crease_edges() == 0u);

@@ -32,7 +32,10 @@ struct Segmentation_options
 {
   double alpha = 0.6;
   double gamma = 0.05;
-  double crease_angle = 20.; // degrees; >= 180: no creases (the paper's pipeline)
+  // degrees; >= 180: no creases (the paper's pipeline). Off by default: at 20 degrees a
+  // raw dihedral threshold also fires on coarse curved tessellations and on noise (see
+  // the manual, Creases).
+  double crease_angle = 180.;
 
   void check() const
   {
