@@ -8,6 +8,7 @@
 // and a non-zero exit status.
 
 #include "edit_script.h"
+#include "huge_pages.h"
 #include "read_input_mesh.h"
 #include "read_user_feature_lines.h"
 
@@ -819,6 +820,7 @@ int run(const Options& options)
 
 int main(int argc, char** argv)
 {
+  fs_demo::use_huge_page_heap(argv);
   Options options;
   try
   {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading and validation of the input mesh of the package's programs. A mesh file is
-// read as a polygon soup with CGAL's readers (OFF, OBJ, PLY, STL), checked for what the
+// read as a polygon soup by the readers of `mesh_io/` (OFF, OBJ, PLY, STL), checked for what the
 // pipeline cannot process (non-finite coordinates, degenerate or folded faces,
 // non-manifold edges), repaired where a repair is harmless (duplicate points and faces,
 // pinched vertices, inconsistent orientation, quads and polygons), and turned into a
@@ -12,9 +12,11 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
 #define CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
 
+#include "mesh_io/read_mesh_soup.h"
+#include "mesh_io/soup_topology.h"
+
 #include <CGAL/Feature_segmentation/input_checks.h>
 
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -23,29 +25,13 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <map>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace fs_demo {
-
-/// Bad input: `what()` is one line, "<file>: <reason>".
-class Input_error : public std::runtime_error
-{
-public:
-  explicit Input_error(const std::string& what) : std::runtime_error(what) {}
-};
 
 /// What reading did to the file's content, for the summary and the notice lines.
 struct Read_report
@@ -97,323 +83,185 @@ struct Input_correspondence
 
 namespace internal {
 
-inline std::string lower_case_extension(const std::string& path)
-{
-  std::string ext = std::filesystem::path(path).extension().string();
-  if(!ext.empty() && ext[0] == '.')
-    ext.erase(0, 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 // A file that does not exist, is not a regular file or cannot be opened gets its own
-// message: CGAL's readers would only return `false`.
+// message (used by the readers of the programs' other input files).
 inline void check_readable_file(const std::string& path)
 {
-  namespace sfs = std::filesystem;
-  std::error_code ec;
-  const sfs::file_status st = sfs::status(path, ec);
-  if(!sfs::exists(st))
-    throw Input_error(path + ": no such file");
-  if(sfs::is_directory(st))
-    throw Input_error(path + ": is a directory, not a mesh file");
-  if(!sfs::is_regular_file(st))
-    throw Input_error(path + ": is not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if(!in)
-    throw Input_error(path + ": cannot be opened for reading");
-  if(in.peek() == std::ifstream::traits_type::eof())
-    throw Input_error(path + ": the file is empty");
-}
-
-template <typename Point>
-bool has_finite_coordinates(const Point& p)
-{
-  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
-         std::isfinite(CGAL::to_double(p.z()));
+  const File_content content(path); // throws the message
 }
 
 // `true` if all points of the polygon lie on one line (or coincide): such a face has no
 // area and no normal, so every later stage would divide by zero on it.
-template <typename Point, typename Polygon>
-bool is_degenerate_polygon(const std::vector<Point>& points, const Polygon& polygon)
+template <typename Point>
+bool is_degenerate_polygon(const std::vector<Point>& points, const std::uint32_t* polygon,
+                           std::size_t n)
 {
   const Point& p = points[polygon[0]];
   std::size_t j = 1;
-  while(j < polygon.size() && points[polygon[j]] == p)
+  while(j < n && points[polygon[j]] == p)
     ++j;
-  if(j == polygon.size())
+  if(j == n)
     return true;
   const Point& q = points[polygon[j]];
-  for(std::size_t k = j + 1; k < polygon.size(); ++k)
+  for(std::size_t k = j + 1; k < n; ++k)
     if(!CGAL::collinear(p, q, points[polygon[k]]))
       return false;
   return true;
 }
 
-// CGAL's text readers stop at "nan" or "inf" and only return `false`; this finds the
-// token, so that the message names the real cause. Returns 0 if there is none.
-inline std::size_t line_of_non_finite_token(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string text;
-  std::size_t line_number = 0;
-  while(std::getline(in, text))
-  {
-    ++line_number;
-    std::istringstream words(text);
-    std::string word;
-    while(words >> word)
-    {
-      std::transform(word.begin(), word.end(), word.begin(),
-                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-      if(!word.empty() && (word[0] == '-' || word[0] == '+'))
-        word.erase(0, 1);
-      if(word == "nan" || word == "inf" || word == "infinity" || word.rfind("nan(", 0) == 0)
-        return line_number;
-    }
-  }
-  return 0;
-}
-
-// CGAL's STL reader merges equal points through an ordered map, where a NaN compares
-// equal to any point: a NaN vertex of a binary STL file would silently become another
-// vertex. The coordinates of a binary file are therefore checked before reading.
-// Returns the 1-based number of the first triangle with a non-finite vertex, else 0.
-inline std::size_t binary_stl_non_finite_triangle(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  char header[84];
-  if(!in.read(header, 84))
-    return 0;
-  const auto le32 = [](const char* b) {
-    return std::uint32_t(static_cast<unsigned char>(b[0])) |
-           std::uint32_t(static_cast<unsigned char>(b[1])) << 8 |
-           std::uint32_t(static_cast<unsigned char>(b[2])) << 16 |
-           std::uint32_t(static_cast<unsigned char>(b[3])) << 24;
-  };
-  const std::uint64_t count = le32(header + 80);
-  std::error_code ec;
-  if(std::filesystem::file_size(path, ec) != 84 + 50 * count || ec)
-    return 0; // not a binary STL file (an ASCII one is checked by its reader)
-  char record[50];
-  for(std::uint64_t t = 0; t < count && in.read(record, 50); ++t)
-    for(int k = 3; k < 12; ++k) // 3 floats of normal, then 3 points
-    {
-      const std::uint32_t bits = le32(record + 4 * k);
-      float x;
-      std::memcpy(&x, &bits, sizeof(float));
-      if(!std::isfinite(x))
-        return static_cast<std::size_t>(t + 1);
-    }
-  return 0;
-}
-
-// CGAL's readers print some diagnostics of their own on std::cerr; the program's
-// contract is one line per error, so they are silenced while a reader runs.
-class Silence_standard_error
-{
-public:
-  Silence_standard_error() : m_cerr(std::cerr.rdbuf(m_sink.rdbuf())), m_clog(std::clog.rdbuf(m_sink.rdbuf())) {}
-  ~Silence_standard_error()
-  {
-    std::cerr.rdbuf(m_cerr);
-    std::clog.rdbuf(m_clog);
-  }
-  Silence_standard_error(const Silence_standard_error&) = delete;
-  Silence_standard_error& operator=(const Silence_standard_error&) = delete;
-
-private:
-  std::ostringstream m_sink;
-  std::streambuf* m_cerr;
-  std::streambuf* m_clog;
-};
-
-inline std::string face_name(std::size_t f) { return "face " + std::to_string(f); }
-
 // Checks that come before any repair, on the soup exactly as in the file: what a repair
-// would silently change (a degenerate face dropped by repair_polygon_soup) or cannot fix
-// is an error here.
-template <typename Point, typename Polygon>
-void check_soup(const std::string& path, const std::vector<Point>& points,
-                const std::vector<Polygon>& polygons)
+// would silently change (a degenerate face dropped) is an error here.
+template <typename Point>
+void check_faces(const std::string& path, const Mesh_soup& soup, const std::vector<Point>& points)
 {
-  if(polygons.empty())
-    throw Input_error(path + ": contains no faces");
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(!has_finite_coordinates(points[i]))
-      throw Input_error(path + ": vertex " + std::to_string(i) +
-                        " has a NaN or infinite coordinate");
-  for(std::size_t f = 0; f < polygons.size(); ++f)
+  std::vector<std::uint32_t> sorted;
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
   {
-    const Polygon& polygon = polygons[f];
-    if(polygon.size() < 3)
-      throw Input_error(path + ": " + face_name(f) + " has " + std::to_string(polygon.size()) +
-                        " vertices (at least 3 are needed)");
-    for(std::size_t id : polygon)
-      if(id >= points.size())
-        throw Input_error(path + ": " + face_name(f) + " refers to vertex " + std::to_string(id) +
-                          " but the file has " + std::to_string(points.size()) + " vertices");
-    std::vector<std::size_t> sorted(polygon.begin(), polygon.end());
+    const std::uint32_t* face = soup.face(f);
+    const std::size_t n = soup.face_size(f);
+    sorted.assign(face, face + n);
     std::sort(sorted.begin(), sorted.end());
     if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-      throw Input_error(path + ": " + face_name(f) + " is degenerate (it uses a vertex twice)");
-    if(is_degenerate_polygon(points, polygon))
-      throw Input_error(path + ": " + face_name(f) +
+      throw Input_error(path + ": " + face_name(soup, f) + " is degenerate (it uses a vertex twice)");
+    if(is_degenerate_polygon(points, face, n))
+      throw Input_error(path + ": " + face_name(soup, f) +
                         " is degenerate (its points are collinear: zero area)");
-  }
-}
-
-// Faces are vertex cycles; an edge is an unordered pair of point indices. Points with the
-// same coordinates must be merged first (repair_polygon_soup) so that equal points share
-// one index.
-template <typename Polygon>
-std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> >
-soup_edge_faces(const std::vector<Polygon>& polygons)
-{
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > edge_faces;
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-  {
-    const Polygon& polygon = polygons[f];
-    for(std::size_t i = 0; i < polygon.size(); ++i)
-    {
-      std::size_t a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-      edge_faces[std::make_pair((std::min)(a, b), (std::max)(a, b))].push_back(f);
-    }
-  }
-  return edge_faces;
-}
-
-// The vertex of `polygon` that follows the edge {a, b} in the triangle fan of the
-// polygon containing that edge; for a triangle, its third vertex.
-template <typename Polygon>
-std::size_t opposite_vertex(const Polygon& polygon, std::size_t a, std::size_t b)
-{
-  const std::size_t n = polygon.size();
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const std::size_t u = polygon[i], v = polygon[(i + 1) % n];
-    if((u == a && v == b) || (u == b && v == a))
-      return polygon[(i + 2) % n];
-  }
-  return polygon[0];
-}
-
-// An edge shared by three faces or more cannot be made manifold without tearing the
-// surface apart, and two faces folded onto each other across an edge (coplanar, on the
-// same side of it) overlap: both are errors.
-template <typename Point, typename Polygon>
-void check_edges(const std::string& path, const std::vector<Point>& points,
-                 const std::vector<Polygon>& polygons)
-{
-  const auto edge_faces = soup_edge_faces(polygons);
-  for(const auto& ef : edge_faces)
-  {
-    const std::size_t a = ef.first.first, b = ef.first.second;
-    const std::vector<std::size_t>& faces = ef.second;
-    if(faces.size() > 2)
-      throw Input_error(path + ": the edge between vertices " + std::to_string(a) + " and " +
-                        std::to_string(b) + " is shared by " + std::to_string(faces.size()) +
-                        " faces (non-manifold edge)");
-    if(faces.size() == 2)
-    {
-      const Point& p = points[a];
-      const Point& q = points[b];
-      const Point& r = points[opposite_vertex(polygons[faces[0]], a, b)];
-      const Point& s = points[opposite_vertex(polygons[faces[1]], a, b)];
-      if(CGAL::coplanar(p, q, r, s) && CGAL::coplanar_orientation(p, q, r, s) == CGAL::POSITIVE)
-        throw Input_error(path + ": " + face_name(faces[0]) + " and " + face_name(faces[1]) +
-                          " overlap (folded onto each other across an edge)");
-    }
   }
 }
 
 constexpr std::size_t no_index = std::size_t(-1);
 
-// A face as a key that is the same for every starting vertex and both orientations, as
-// CGAL's merge_duplicate_polygons_in_polygon_soup compares faces by default.
-template <typename Polygon>
-std::vector<std::size_t> canonical_face(const Polygon& polygon)
-{
-  const std::size_t n = polygon.size();
-  const std::size_t first = static_cast<std::size_t>(
-    std::min_element(polygon.begin(), polygon.end()) - polygon.begin());
-  std::vector<std::size_t> forward(n), backward(n);
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    forward[k] = polygon[(first + k) % n];
-    backward[k] = polygon[(first + n - k) % n];
-  }
-  return (std::min)(forward, backward);
-}
-
-// What CGAL's repair_polygon_soup does to a soup that passed check_soup, with the
+// What CGAL's repair_polygon_soup does to a soup that passed check_faces, with the
 // correspondence it does not give: points at the same position become the first of them,
 // a face listing one position twice in a row keeps it once, a face equal to an earlier
 // one (up to its start and orientation) is removed in favour of that one, and points no
-// face uses are removed. The kept points and faces keep their file order.
-// `point_of_file_point[i]` is the new index of file point i (`no_index` if unused),
-// `polygon_of_file_face[f]` the new index of file face f.
-template <typename Point, typename Polygon>
-void merge_duplicates(const std::string& path, std::vector<Point>& points,
-                      std::vector<Polygon>& polygons,
-                      std::vector<std::size_t>& point_of_file_point,
-                      std::vector<std::size_t>& polygon_of_file_face)
+// face uses are removed. The kept points and faces keep their file order; the soup is
+// changed in place. `point_of_file_point[i]` is the new index of file point i
+// (`no_index` if unused), `polygon_of_file_face[f]` the new index of file face f.
+// Returns the vertex-to-corner table of the result.
+template <typename Point>
+Vertex_corners merge_duplicates(const std::string& path, Mesh_soup& soup, std::vector<Point>& points,
+                                std::vector<std::size_t>& point_of_file_point,
+                                std::vector<std::size_t>& polygon_of_file_face)
 {
-  // Coordinates are finite here (check_soup), so the lexicographic order is a strict order.
-  std::vector<std::size_t> first_at_position(points.size());
+  const std::vector<std::uint32_t> first = first_at_position(soup);
+  soup.points = std::vector<std::array<double, 3> >(); // `points` has them
+  const std::size_t number_of_file_faces = soup.number_of_faces();
+  std::uint32_t out = 0, start = 0;
+  std::vector<std::uint32_t> sorted;
+  for(std::size_t f = 0; f < number_of_file_faces; ++f)
   {
-    std::map<Point, std::size_t> first;
-    for(std::size_t i = 0; i < points.size(); ++i)
-      first_at_position[i] = first.emplace(points[i], i).first->second;
-  }
-
-  std::vector<Polygon> kept;
-  polygon_of_file_face.assign(polygons.size(), no_index);
-  std::map<std::vector<std::size_t>, std::size_t> face_of_key;
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-  {
-    Polygon merged;
-    for(std::size_t i : polygons[f])
+    const std::uint32_t face_start = out;
+    for(std::uint32_t c = start; c < soup.begin[f + 1]; ++c)
     {
-      const std::size_t j = first_at_position[i];
-      if(merged.empty() || merged.back() != j)
-        merged.push_back(j);
+      const std::uint32_t j = first[soup.indices[c]];
+      if(out == face_start || soup.indices[out - 1] != j)
+        soup.indices[out++] = j;
     }
-    if(merged.size() > 1 && merged.back() == merged.front())
-      merged.pop_back();
-    std::vector<std::size_t> sorted(merged.begin(), merged.end());
+    if(out - face_start > 1 && soup.indices[out - 1] == soup.indices[face_start])
+      --out;
+    sorted.assign(soup.indices.begin() + face_start, soup.indices.begin() + out);
     std::sort(sorted.begin(), sorted.end());
-    if(merged.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-      throw Input_error(path + ": " + face_name(f) +
+    const bool repeated =
+      sorted.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+    if(repeated)
+      throw Input_error(path + ": " + face_name(soup, f) +
                         " is degenerate (two of its vertices are at the same position)");
-    const auto inserted = face_of_key.emplace(canonical_face(merged), kept.size());
-    polygon_of_file_face[f] = inserted.first->second;
-    if(inserted.second)
-      kept.push_back(std::move(merged));
+    start = soup.begin[f + 1];
+    soup.begin[f + 1] = out;
   }
+  soup.indices.resize(out);
 
-  std::vector<std::size_t> new_index(points.size(), no_index);
-  for(const Polygon& polygon : kept)
-    for(std::size_t i : polygon)
-      new_index[i] = 0; // used; numbered below in file order
-  std::vector<Point> used_points;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(new_index[i] != no_index)
+  Vertex_corners corners(soup, points.size());
+  const std::vector<std::uint32_t> first_face = first_equal_face(soup, corners);
+  polygon_of_file_face.assign(number_of_file_faces, no_index);
+  std::vector<std::uint32_t> new_index(points.size(), no_corner);
+  out = 0;
+  std::size_t kept = 0;
+  for(std::size_t f = 0; f < number_of_file_faces; ++f)
+  {
+    if(first_face[f] != f)
     {
-      new_index[i] = used_points.size();
-      used_points.push_back(points[i]);
+      polygon_of_file_face[f] = polygon_of_file_face[first_face[f]];
+      continue;
     }
-  for(Polygon& polygon : kept)
-    for(std::size_t& i : polygon)
-      i = new_index[i];
-  point_of_file_point.resize(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    point_of_file_point[i] = new_index[first_at_position[i]];
+    polygon_of_file_face[f] = kept;
+    const std::uint32_t face_start = out;
+    for(std::uint32_t c = soup.begin[f]; c < soup.begin[f + 1]; ++c)
+    {
+      new_index[soup.indices[c]] = 0; // used; numbered below in file order
+      soup.indices[out++] = soup.indices[c];
+    }
+    soup.begin[kept] = face_start;
+    if(f < soup.face_line.size())
+      soup.face_line[kept] = soup.face_line[f];
+    ++kept;
+  }
+  soup.begin[kept] = out;
+  soup.begin.resize(kept + 1);
+  soup.indices.resize(out);
+  if(!soup.face_line.empty())
+    soup.face_line.resize(kept);
 
-  points.swap(used_points);
-  polygons.swap(kept);
+  std::uint32_t used = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(new_index[i] != no_corner)
+    {
+      new_index[i] = used;
+      points[used++] = points[i];
+    }
+  const bool unchanged = kept == number_of_file_faces && used == points.size();
+  points.resize(used);
+  for(std::uint32_t& i : soup.indices)
+    i = new_index[i];
+  point_of_file_point.resize(first.size());
+  for(std::size_t i = 0; i < first.size(); ++i)
+    point_of_file_point[i] = new_index[first[i]] == no_corner ? no_index : new_index[first[i]];
+  if(unchanged) // the usual case: the table is still right
+    return corners;
+  return Vertex_corners(soup, points.size());
+}
+
+// The slow path, for a soup whose faces must be reoriented or whose vertices must be
+// split: CGAL's orient_polygon_soup, then Euler::add_face one face at a time. Point i
+// becomes the i-th vertex and polygon p the p-th face; orient_polygon_soup appends the
+// copies of split points, so the originals stay first. Returns the number of points
+// that were duplicated.
+template <typename Mesh, typename Point>
+std::size_t orient_and_build(const std::string& path, const Mesh_soup& soup,
+                             std::vector<Point>& points, Mesh& mesh,
+                             std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& vertex_of_point,
+                             std::vector<typename boost::graph_traits<Mesh>::face_descriptor>& face_of_polygon)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::vector<std::vector<std::size_t> > polygons(soup.number_of_faces());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    polygons[f].assign(soup.face(f), soup.face(f) + soup.face_size(f));
+  const std::size_t number_of_points = points.size();
+  PMP::orient_polygon_soup(points, polygons);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw Input_error(path + ": the faces do not form a manifold surface, even after repair");
+  mesh.clear();
+  vertex_of_point.resize(points.size());
+  auto vpm = get(CGAL::vertex_point, mesh);
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    vertex_of_point[i] = add_vertex(mesh);
+    put(vpm, vertex_of_point[i], points[i]);
+  }
+  face_of_polygon.resize(polygons.size());
+  std::vector<vertex_descriptor> face_vertices;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    face_vertices.clear();
+    for(std::size_t i : polygons[p])
+      face_vertices.push_back(vertex_of_point[i]);
+    face_of_polygon[p] = CGAL::Euler::add_face(face_vertices, mesh);
+    if(face_of_polygon[p] == boost::graph_traits<Mesh>::null_face())
+      throw Input_error(path + ": the faces do not form a manifold surface, even after repair");
+  }
+  return points.size() - number_of_points;
 }
 
 // A triangulation visitor that records the triangles made from a face, in the order of
@@ -447,118 +295,71 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
-  typedef std::vector<std::size_t> Polygon;
   namespace PMP = CGAL::Polygon_mesh_processing;
 
   Read_report report;
-  internal::check_readable_file(path);
-  report.format = internal::lower_case_extension(path);
-  if(report.format != "off" && report.format != "obj" && report.format != "ply" &&
-     report.format != "stl")
-    throw Input_error(path + ": unknown format " +
-                      (report.format.empty() ? std::string("(no extension)")
-                                             : "'." + report.format + "'") +
-                      " (expected .off, .obj, .ply or .stl)");
-
-  if(report.format == "stl")
-    if(const std::size_t t = internal::binary_stl_non_finite_triangle(path))
-      throw Input_error(path + ": triangle " + std::to_string(t) +
-                        " has a NaN or infinite coordinate");
+  Mesh_soup soup;
+  read_mesh_soup(path, soup);
+  report.format = soup.format;
+  report.number_of_file_points = soup.points.size();
+  report.number_of_file_faces = soup.number_of_faces();
 
   std::vector<Point> points;
-  std::vector<Polygon> polygons;
-  bool ok = false;
-  try
-  {
-    internal::Silence_standard_error silence;
-    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-  }
-  catch(const std::bad_alloc&)
-  {
-    throw Input_error(path + ": cannot be read as " + report.format +
-                      " (out of memory: are the element counts of the header right?)");
-  }
-  catch(const std::exception& e)
-  {
-    throw Input_error(path + ": cannot be read as " + report.format + " (" + e.what() + ")");
-  }
-  if(!ok)
-  {
-    if(const std::size_t line = internal::line_of_non_finite_token(path))
-      throw Input_error(path + ": line " + std::to_string(line) +
-                        " has a NaN or infinite coordinate");
-    throw Input_error(path + ": cannot be read as " + report.format +
-                      " (malformed or truncated file)");
-  }
-  report.number_of_file_points = points.size();
-  report.number_of_file_faces = polygons.size();
-
-  internal::check_soup(path, points, polygons);
+  points.reserve(soup.points.size());
+  for(const std::array<double, 3>& p : soup.points)
+    points.emplace_back(p[0], p[1], p[2]);
+  internal::check_faces(path, soup, points);
 
   // Merges points with equal coordinates, removes duplicate faces and unused points,
   // recording where each point and face of the file goes. Degenerate faces were
   // rejected above.
   std::vector<std::size_t> point_of_file_point, polygon_of_file_face;
-  internal::merge_duplicates(path, points, polygons, point_of_file_point, polygon_of_file_face);
+  const internal::Vertex_corners corners =
+    internal::merge_duplicates(path, soup, points, point_of_file_point, polygon_of_file_face);
   if(points.size() < report.number_of_file_points)
   {
     report.number_of_merged_points = report.number_of_file_points - points.size();
     report.notices.push_back("removed " + std::to_string(report.number_of_merged_points) +
                              " duplicate or unused vertices");
   }
-  if(polygons.size() < report.number_of_file_faces)
+  if(soup.number_of_faces() < report.number_of_file_faces)
   {
-    report.number_of_removed_faces = report.number_of_file_faces - polygons.size();
+    report.number_of_removed_faces = report.number_of_file_faces - soup.number_of_faces();
     report.notices.push_back("removed " + std::to_string(report.number_of_removed_faces) +
                              " duplicate faces");
   }
 
-  internal::check_edges(path, points, polygons);
-
-  const std::size_t number_of_points = points.size();
-  if(!PMP::orient_polygon_soup(points, polygons) || points.size() != number_of_points)
+  // Point i becomes the i-th vertex, polygon p the p-th face, so that the file's order
+  // is kept. A consistently oriented soup with one fan per vertex is built directly;
+  // anything else goes through CGAL's reorientation, which may split vertices.
+  std::vector<vertex_descriptor> vertex_of_point;
+  std::vector<face_descriptor> face_of_polygon;
+  const internal::Soup_topology topology = internal::analyse_edges(path, soup, points, corners);
+  if(topology.is_consistently_oriented && topology.has_manifold_vertices)
+    internal::build_mesh(soup, points, topology, mesh, vertex_of_point, face_of_polygon);
+  else
   {
-    report.number_of_duplicated_points = points.size() - number_of_points;
-    report.notices.push_back("duplicated " + std::to_string(report.number_of_duplicated_points) +
-                             " non-manifold or non-orientable vertices");
+    report.number_of_duplicated_points =
+      internal::orient_and_build(path, soup, points, mesh, vertex_of_point, face_of_polygon);
+    if(report.number_of_duplicated_points > 0)
+      report.notices.push_back("duplicated " + std::to_string(report.number_of_duplicated_points) +
+                               " non-manifold or non-orientable vertices");
+    else
+      report.notices.push_back("reoriented faces that disagreed with their neighbours");
   }
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    throw Input_error(path + ": the faces do not form a manifold surface, even after repair");
-
-  // Built here rather than by polygon_soup_to_polygon_mesh, which does not say which
-  // face a polygon became. Point i becomes the i-th vertex, polygon p the p-th face.
-  // orient_polygon_soup appends the copies of split points: the originals stay first.
-  mesh.clear();
-  std::vector<vertex_descriptor> vertex_of_point(points.size());
-  auto vpm = get(CGAL::vertex_point, mesh);
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    vertex_of_point[i] = add_vertex(mesh);
-    put(vpm, vertex_of_point[i], points[i]);
-  }
-  std::vector<face_descriptor> face_of_polygon(polygons.size());
-  std::vector<vertex_descriptor> face_vertices;
-  for(std::size_t p = 0; p < polygons.size(); ++p)
-  {
-    face_vertices.clear();
-    for(std::size_t i : polygons[p])
-      face_vertices.push_back(vertex_of_point[i]);
-    face_of_polygon[p] = CGAL::Euler::add_face(face_vertices, mesh);
-    if(face_of_polygon[p] == boost::graph_traits<Mesh>::null_face())
-      throw Input_error(path + ": the faces do not form a manifold surface, even after repair");
-  }
+  const std::size_t number_of_polygons = face_of_polygon.size();
 
   // One face at a time, so that each polygon's first triangle is known.
-  std::vector<std::size_t> file_face_of_polygon(polygons.size(), internal::no_index);
+  std::vector<std::size_t> file_face_of_polygon(number_of_polygons, internal::no_index);
   for(std::size_t f = polygon_of_file_face.size(); f-- > 0;)
     file_face_of_polygon[polygon_of_file_face[f]] = f; // the first file face wins
-  std::vector<std::size_t> polygon_begin(polygons.size() + 1, 0);
+  std::vector<std::size_t> polygon_begin(number_of_polygons + 1, 0);
   std::vector<face_descriptor> subfaces;
   correspondence.triangles.clear();
-  for(std::size_t p = 0; p < polygons.size(); ++p)
+  for(std::size_t p = 0; p < number_of_polygons; ++p)
   {
     polygon_begin[p] = correspondence.triangles.size();
-    if(polygons[p].size() == 3)
+    if(soup.face_size(p) == 3)
     {
       correspondence.triangles.push_back(face_of_polygon[p]);
       continue;
@@ -568,12 +369,12 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
     if(!PMP::triangulate_face(face_of_polygon[p], mesh,
                               CGAL::parameters::visitor(internal::Subface_visitor<Mesh>(subfaces))) ||
        subfaces.empty())
-      throw Input_error(path + ": " + internal::face_name(file_face_of_polygon[p]) +
+      throw Input_error(path + ": face " + std::to_string(file_face_of_polygon[p]) +
                         " (a quad or polygon) cannot be triangulated");
     face_of_polygon[p] = subfaces.front();
     correspondence.triangles.insert(correspondence.triangles.end(), subfaces.begin(), subfaces.end());
   }
-  polygon_begin[polygons.size()] = correspondence.triangles.size();
+  polygon_begin[number_of_polygons] = correspondence.triangles.size();
   if(report.number_of_triangulated_faces > 0)
     report.notices.push_back("triangulated " + std::to_string(report.number_of_triangulated_faces) +
                              " faces (quads or polygons)");

@@ -419,16 +419,13 @@ check "fandisk.obj: same feature lines as the OFF file" \
 
 # Binary STL, written byte by byte: 80-byte header, triangle count, then per triangle a
 # normal, three points (little-endian floats) and 2 attribute bytes.
-f0='\x00\x00\x00\x00'; f1='\x00\x00\x80\x3f'; fnan='\x00\x00\xc0\x7f'
+f0='\x00\x00\x00\x00'; f1='\x00\x00\x80\x3f'
 stl_triangle() { printf "$f0$f0$f0$1$2$3"'\x00\x00'; }
 { head -c 80 /dev/zero; printf '\x04\x00\x00\x00'
   stl_triangle "$f0$f0$f0" "$f0$f1$f0" "$f1$f0$f0"
   stl_triangle "$f0$f0$f0" "$f0$f0$f1" "$f0$f1$f0"
   stl_triangle "$f0$f0$f0" "$f1$f0$f0" "$f0$f0$f1"
   stl_triangle "$f1$f0$f0" "$f0$f1$f0" "$f0$f0$f1"; } > "$work/tetrahedron.stl"
-{ head -c 80 /dev/zero; printf '\x02\x00\x00\x00'
-  stl_triangle "$f0$f0$f0" "$f0$f1$f0" "$f1$f0$f0"
-  stl_triangle "$f0$f0$f0" "$f0$f0$fnan" "$f0$f1$f0"; } > "$work/nan_binary.stl"
 run stl "$work/tetrahedron.stl" --output-dir "$work/stl" --quiet
 check "tetrahedron.stl: exit status 0 (stderr: $(tail -n 1 "$work/stl.err"))" [ "$rc" -eq 0 ]
 check "tetrahedron.stl: 4 vertices (shared points merged)" \
@@ -545,25 +542,7 @@ check "box --edits: back to the automatic patches after undoing everything" \
 
 # ---- bad input ----------------------------------------------------------------------------
 bad="$work/bad"
-mkdir -p "$bad/a_directory.off"
-printf 'OFF\n0 0 0\n' > "$bad/empty.off"
-: > "$bad/zero_bytes.off"
-printf 'OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n3 0 1 2\n3 0 2 3\n' > "$bad/nan.off"
-printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 inf 0\n0 0 1\n3 0 1 2\n3 0 2 3\n' > "$bad/inf.off"
-printf 'v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n' > "$bad/inf.obj"
-# Three triangles on the edge (0, 1).
-printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' > "$bad/non_manifold_edge.off"
-# Two triangles folded onto each other across the edge (0, 1).
-printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0.5 2 0\n3 0 1 2\n3 1 0 3\n' > "$bad/folded.off"
-printf 'OFF\n4 2 0\n0 0 0\n1 1 1\n2 2 2\n0 0 1\n3 0 1 2\n3 0 2 3\n' > "$bad/degenerate.off"
-printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n' > "$bad/repeated_index.off"
-printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n' > "$bad/truncated.off"
-printf 'OFF\n2000000000 2000000000 0\n0 0 0\n' > "$bad/huge_header.off"
-head -c 4096 /dev/urandom > "$bad/garbage.off"
-head -c 4096 /dev/urandom > "$bad/garbage.ply"
-head -c 4096 /dev/urandom > "$bad/garbage.stl"
-echo "not a mesh" > "$bad/mesh.xyz"
-echo "not a mesh" > "$bad/no_extension"
+mkdir -p "$bad"
 # Edit scripts with one mistake each, after valid lines where the line number matters.
 printf 'alpha 0.8\nfrob 1\n' > "$bad/verb.edits"
 printf '# a comment\n\nalpha 1 2\n' > "$bad/arity.edits"
@@ -611,27 +590,7 @@ expect_error() {
   echo "  $name: $last"
 }
 
-echo "bad-input cases (name: message):"
-expect_error missing_file           1 'no such file'                "$bad/missing.off"
-expect_error missing_folder         1 'no such file'                "$bad/no/such/folder/mesh.off"
-expect_error directory              1 'is a directory'              "$bad/a_directory.off"
-expect_error zero_bytes             1 'empty'                       "$bad/zero_bytes.off"
-expect_error garbage_off            1 'cannot be read as off'       "$bad/garbage.off"
-expect_error garbage_ply            1 'cannot be read as ply'       "$bad/garbage.ply"
-expect_error garbage_stl            1 'cannot be read as stl'       "$bad/garbage.stl"
-expect_error unknown_extension      1 "unknown format '\.xyz'"      "$bad/mesh.xyz"
-expect_error no_extension           1 'unknown format'              "$bad/no_extension"
-expect_error empty_mesh             1 'contains no faces'           "$bad/empty.off"
-expect_error nan_coordinate         1 'NaN or infinite'             "$bad/nan.off"
-expect_error inf_coordinate         1 'NaN or infinite'             "$bad/inf.off"
-expect_error inf_coordinate_obj     1 'NaN or infinite'             "$bad/inf.obj"
-expect_error nan_coordinate_stl     1 'triangle 2 has a NaN'        "$work/nan_binary.stl"
-expect_error non_manifold_edge      1 'shared by 3 faces'           "$bad/non_manifold_edge.off"
-expect_error folded_faces           1 'overlap'                     "$bad/folded.off"
-expect_error degenerate_triangle    1 'degenerate'                  "$bad/degenerate.off"
-expect_error repeated_index         1 'degenerate'                  "$bad/repeated_index.off"
-expect_error truncated              1 'malformed or truncated'      "$bad/truncated.off"
-expect_error huge_header            1 'cannot be read'              "$bad/huge_header.off"
+echo "bad-input cases (name: message; bad mesh files are in script_bad_inputs.sh):"
 expect_error rings_zero             2 '--rings'                     "$fandisk" --rings 0
 expect_error rings_negative         2 '--rings'                     "$fandisk" --rings -3
 expect_error rings_text             2 "--rings expects an integer"  "$fandisk" --rings abc

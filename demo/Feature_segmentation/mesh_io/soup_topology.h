@@ -1,0 +1,459 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The repairs and checks that turn a file's polygon soup into a mesh, in time linear in
+// the soup: points at the same position merged, duplicate faces removed, each edge's
+// faces found through a vertex-to-corner table (no map, no sort of the edges), every edge
+// checked for more than two faces and for two faces folded onto each other, and each
+// vertex checked for a single fan. A soup that passes (the usual case) is built into the
+// mesh directly, halfedge by halfedge; one that needs reorienting or has pinched
+// vertices is left to CGAL's `orient_polygon_soup` by the caller.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_SOUP_TOPOLOGY_H
+#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_SOUP_TOPOLOGY_H
+
+#include "mesh_soup.h"
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Surface_mesh/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace fs_demo {
+namespace internal {
+
+constexpr std::uint32_t no_corner = std::uint32_t(-1);
+
+/// For each vertex, the corners (positions in `soup.indices`) at it, in face order.
+struct Vertex_corners
+{
+  std::vector<std::uint32_t> begin;   // size: number of points + 1
+  std::vector<std::uint32_t> corners;
+  std::vector<std::uint32_t> face_of; // face of each corner
+
+  Vertex_corners(const Mesh_soup& soup, std::size_t n)
+  {
+    begin.assign(n + 1, 0);
+    for(std::uint32_t v : soup.indices)
+      ++begin[v + 1];
+    for(std::size_t i = 0; i < n; ++i)
+      begin[i + 1] += begin[i];
+    corners.resize(soup.indices.size());
+    face_of.resize(soup.indices.size());
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+      for(std::uint32_t c = soup.begin[f]; c < soup.begin[f + 1]; ++c)
+      {
+        corners[fill[soup.indices[c]]++] = c;
+        face_of[c] = static_cast<std::uint32_t>(f);
+      }
+  }
+};
+
+/// The corner after `c` in its face.
+inline std::uint32_t next_corner(const Mesh_soup& soup, const Vertex_corners& vc, std::uint32_t c)
+{
+  const std::uint32_t f = vc.face_of[c];
+  return c + 1 == soup.begin[f + 1] ? soup.begin[f] : c + 1;
+}
+
+/// The corner before `c` in its face.
+inline std::uint32_t previous_corner(const Mesh_soup& soup, const Vertex_corners& vc, std::uint32_t c)
+{
+  const std::uint32_t f = vc.face_of[c];
+  return c == soup.begin[f] ? soup.begin[f + 1] - 1 : c - 1;
+}
+
+/// Merges points at the same position into the first of them: `first_at_position[i]` is
+/// the first point with the coordinates of point `i`. Coordinates are finite. An open
+/// addressing table of point indices: no allocation per point.
+inline std::vector<std::uint32_t> first_at_position(const Mesh_soup& soup)
+{
+  const auto hash = [](const std::array<double, 3>& p) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for(double v : p)
+    {
+      if(v == 0)
+        v = 0; // -0 and 0 are one position
+      std::uint64_t b;
+      std::memcpy(&b, &v, sizeof b);
+      h = (h ^ b) * 0xbf58476d1ce4e5b9ull;
+      h ^= h >> 29;
+    }
+    return h;
+  };
+  const std::size_t n = soup.points.size();
+  std::size_t size = 16;
+  while(size < 2 * n)
+    size *= 2;
+  std::vector<std::uint32_t> table(size, no_corner);
+  std::vector<std::uint32_t> result(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<double, 3>& p = soup.points[i];
+    for(std::size_t slot = hash(p) & (size - 1);; slot = (slot + 1) & (size - 1))
+    {
+      const std::uint32_t j = table[slot];
+      if(j == no_corner)
+      {
+        table[slot] = result[i] = static_cast<std::uint32_t>(i);
+        break;
+      }
+      const std::array<double, 3>& q = soup.points[j];
+      if(p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
+      {
+        result[i] = j;
+        break;
+      }
+    }
+  }
+  return result;
+}
+
+/// A face as a key that is the same for every starting vertex and both orientations.
+inline std::vector<std::uint32_t> canonical_face(const std::uint32_t* face, std::size_t n)
+{
+  const std::size_t first = static_cast<std::size_t>(std::min_element(face, face + n) - face);
+  std::vector<std::uint32_t> forward(n), backward(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    forward[k] = face[(first + k) % n];
+    backward[k] = face[(first + n - k) % n];
+  }
+  return (std::min)(forward, backward);
+}
+
+/// `true` if faces `f` and `g` of `soup` are the same face (up to start and orientation).
+inline bool same_face(const Mesh_soup& soup, std::size_t f, std::size_t g)
+{
+  const std::size_t n = soup.face_size(f);
+  if(soup.face_size(g) != n)
+    return false;
+  if(n == 3)
+  {
+    std::uint32_t a[3], b[3];
+    std::copy(soup.face(f), soup.face(f) + 3, a);
+    std::copy(soup.face(g), soup.face(g) + 3, b);
+    std::sort(a, a + 3);
+    std::sort(b, b + 3);
+    return std::equal(a, a + 3, b);
+  }
+  return canonical_face(soup.face(f), n) == canonical_face(soup.face(g), n);
+}
+
+/// For each face, the first face equal to it (itself if it is the first).
+inline std::vector<std::uint32_t> first_equal_face(const Mesh_soup& soup, const Vertex_corners& vc)
+{
+  std::vector<std::uint32_t> result(soup.number_of_faces());
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+  {
+    result[f] = static_cast<std::uint32_t>(f);
+    const std::uint32_t v = *std::min_element(soup.face(f), soup.face(f) + soup.face_size(f));
+    for(std::uint32_t k = vc.begin[v]; k < vc.begin[v + 1]; ++k)
+    {
+      const std::uint32_t g = vc.face_of[vc.corners[k]];
+      if(g >= f)
+        break; // corners are in face order
+      if(same_face(soup, f, g))
+      {
+        result[f] = result[g];
+        break;
+      }
+    }
+  }
+  return result;
+}
+
+// `true` unless the normals of two faces (of their first three points) make an angle
+// clearly below 180 degrees.
+template <typename Point>
+bool nearly_opposite_normals(const std::vector<Point>& points, const std::uint32_t* f, const std::uint32_t* g)
+{
+  const auto normal = [&points](const std::uint32_t* face) {
+    const Point& a = points[face[0]];
+    const Point& b = points[face[1]];
+    const Point& c = points[face[2]];
+    const double u[3] = {CGAL::to_double(b.x() - a.x()), CGAL::to_double(b.y() - a.y()), CGAL::to_double(b.z() - a.z())};
+    const double v[3] = {CGAL::to_double(c.x() - a.x()), CGAL::to_double(c.y() - a.y()), CGAL::to_double(c.z() - a.z())};
+    return std::array<double, 3>{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
+  };
+  const std::array<double, 3> m = normal(f), n = normal(g);
+  const double dot = m[0] * n[0] + m[1] * n[1] + m[2] * n[2];
+  const double mm = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
+  const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  // Polygons may be non-planar and their first three points collinear: test them exactly.
+  return !(dot > -0.5 * std::sqrt(mm * nn)) || mm == 0 || nn == 0;
+}
+
+/// What `analyse_edges` found out about a soup without duplicates.
+struct Soup_topology
+{
+  /// For each corner c (the edge from its vertex to the next corner's), the corner of
+  /// the face on the other side of that edge, which runs the other way; `no_corner` on
+  /// the border.
+  std::vector<std::uint32_t> twin;
+  bool is_consistently_oriented = true; ///< no edge is run the same way by two faces
+  bool has_manifold_vertices = true;    ///< every vertex has one fan of faces
+};
+
+/// Finds each edge's faces. Throws `Input_error` for an edge with more than two faces
+/// and for two faces folded onto each other (coplanar, on the same side of their edge).
+template <typename Point>
+Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
+                            const std::vector<Point>& points, const Vertex_corners& vc)
+{
+  Soup_topology topology;
+  topology.twin.assign(soup.indices.size(), no_corner);
+  // The vertex opposite the edge from corner c: for a triangle, its third vertex; for a
+  // polygon, the one after the edge, as in the fan that triangulates it.
+  const auto opposite = [&](std::uint32_t c) {
+    return soup.indices[next_corner(soup, vc, next_corner(soup, vc, c))];
+  };
+  for(std::uint32_t c = 0; c < soup.indices.size(); ++c)
+  {
+    const std::uint32_t a = soup.indices[c];
+    const std::uint32_t b = soup.indices[next_corner(soup, vc, c)];
+    std::uint32_t faces = 1, other = no_corner;
+    bool same_direction = false;
+    for(std::uint32_t k = vc.begin[b]; k < vc.begin[b + 1]; ++k) // b -> a elsewhere
+    {
+      const std::uint32_t d = vc.corners[k];
+      if(vc.face_of[d] != vc.face_of[c] && soup.indices[next_corner(soup, vc, d)] == a)
+      {
+        ++faces;
+        other = d;
+      }
+    }
+    for(std::uint32_t k = vc.begin[a]; k < vc.begin[a + 1]; ++k) // a -> b elsewhere
+    {
+      const std::uint32_t d = vc.corners[k];
+      if(d != c && soup.indices[next_corner(soup, vc, d)] == b)
+      {
+        ++faces;
+        other = d;
+        same_direction = true;
+      }
+    }
+    if(faces > 2)
+      throw Input_error(path + ": the edge between vertices " + std::to_string((std::min)(a, b)) +
+                        " and " + std::to_string((std::max)(a, b)) + " is shared by " +
+                        std::to_string(faces) + " faces (non-manifold edge)");
+    if(faces < 2)
+      continue;
+    if(same_direction)
+      topology.is_consistently_oriented = false;
+    else
+      topology.twin[c] = other;
+    // Two faces folded onto each other have opposite normals; only a pair whose double
+    // normals are close to opposite needs the exact test.
+    if(c < other && nearly_opposite_normals(points, soup.face(vc.face_of[c]), soup.face(vc.face_of[other])))
+    {
+      const Point& p = points[a];
+      const Point& q = points[b];
+      const Point& r = points[opposite(c)];
+      const Point& s = points[same_direction ? opposite(other)
+                                             : soup.indices[previous_corner(soup, vc, other)]];
+      if(CGAL::coplanar(p, q, r, s) && CGAL::coplanar_orientation(p, q, r, s) == CGAL::POSITIVE)
+        throw Input_error(path + ": " + face_name(soup, vc.face_of[c]) + " and " +
+                          face_name(soup, vc.face_of[other]) +
+                          " overlap (folded onto each other across an edge)");
+    }
+  }
+  if(!topology.is_consistently_oriented)
+    return topology;
+
+  // One fan per vertex: turning around v from corner to corner across edges must visit
+  // every corner at v. A walk starts at a border (if there is one) so that it covers an
+  // open fan whole.
+  for(std::uint32_t v = 0; v + 1 < vc.begin.size(); ++v)
+  {
+    const std::uint32_t first = vc.begin[v], last = vc.begin[v + 1];
+    if(last - first < 2)
+      continue;
+    std::uint32_t start = vc.corners[first];
+    for(std::uint32_t k = first; k < last; ++k)
+      if(topology.twin[previous_corner(soup, vc, vc.corners[k])] == no_corner)
+      {
+        start = vc.corners[k]; // the edge into v from this face is on the border
+        break;
+      }
+    std::uint32_t visited = 1;
+    for(std::uint32_t c = start;;)
+    {
+      // Across the edge from v to the next vertex, to the twin's face, whose corner at v
+      // follows the twin corner.
+      const std::uint32_t t = topology.twin[c];
+      if(t == no_corner)
+        break;
+      c = next_corner(soup, vc, t);
+      if(c == start)
+        break;
+      if(++visited > last - first)
+        break;
+    }
+    if(visited != last - first)
+    {
+      topology.has_manifold_vertices = false;
+      return topology;
+    }
+  }
+  return topology;
+}
+
+/// Builds `mesh` from a soup that `analyse_edges` found consistently oriented with
+/// manifold vertices: point i becomes the i-th vertex, face f the f-th face.
+template <typename Mesh, typename Point>
+void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
+                const Soup_topology& topology, Mesh& mesh,
+                std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& vertex_of_point,
+                std::vector<typename boost::graph_traits<Mesh>::face_descriptor>& face_of_polygon)
+{
+  typedef boost::graph_traits<Mesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  mesh.clear();
+  std::size_t number_of_edges = 0;
+  for(std::uint32_t t : topology.twin)
+    number_of_edges += (t == no_corner) ? 2 : 1; // a twin pair is counted twice
+  reserve(mesh, points.size(), number_of_edges / 2, soup.number_of_faces());
+
+  auto vpm = get(CGAL::vertex_point, mesh);
+  vertex_of_point.resize(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    vertex_of_point[i] = add_vertex(mesh);
+    put(vpm, vertex_of_point[i], points[i]);
+  }
+
+  // The halfedge of each corner: from its vertex to the next corner's.
+  std::vector<halfedge_descriptor> halfedge_of(soup.indices.size(), GT::null_halfedge());
+  face_of_polygon.resize(soup.number_of_faces());
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+  {
+    const auto face = add_face(mesh);
+    face_of_polygon[f] = face;
+    const std::uint32_t first = soup.begin[f], last = soup.begin[f + 1];
+    for(std::uint32_t c = first; c < last; ++c)
+    {
+      const std::uint32_t t = topology.twin[c];
+      halfedge_descriptor h;
+      if(t != no_corner && halfedge_of[t] != GT::null_halfedge())
+        h = opposite(halfedge_of[t], mesh);
+      else
+      {
+        h = halfedge(add_edge(mesh), mesh);
+        const std::uint32_t n = c + 1 == last ? first : c + 1;
+        set_target(h, vertex_of_point[soup.indices[n]], mesh);
+        set_target(opposite(h, mesh), vertex_of_point[soup.indices[c]], mesh);
+        set_face(opposite(h, mesh), GT::null_face(), mesh);
+      }
+      halfedge_of[c] = h;
+      set_face(h, face, mesh);
+    }
+    for(std::uint32_t c = first; c < last; ++c)
+    {
+      const std::uint32_t n = c + 1 == last ? first : c + 1;
+      set_next(halfedge_of[c], halfedge_of[n], mesh);
+      set_halfedge(vertex_of_point[soup.indices[n]], halfedge_of[c], mesh);
+    }
+    // The halfedge into the first vertex, as Euler::add_face does: walking the face from
+    // it lists the vertices in the file's order, from the first.
+    set_halfedge(face, halfedge_of[last - 1], mesh);
+  }
+
+  // Border halfedges. The corner c (a -> b) without a twin has the border halfedge
+  // b -> a as its opposite: it is a's halfedge (it runs into a), and it continues with
+  // the border halfedge leaving a. With one fan per vertex, a vertex has one of each.
+  std::vector<halfedge_descriptor> border_from(points.size(), GT::null_halfedge());
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+    for(std::uint32_t c = soup.begin[f]; c < soup.begin[f + 1]; ++c)
+      if(topology.twin[c] == no_corner)
+      {
+        const std::uint32_t n = c + 1 == soup.begin[f + 1] ? soup.begin[f] : c + 1;
+        border_from[soup.indices[n]] = opposite(halfedge_of[c], mesh);
+      }
+  for(std::uint32_t c = 0; c < soup.indices.size(); ++c)
+    if(topology.twin[c] == no_corner)
+    {
+      const halfedge_descriptor border = opposite(halfedge_of[c], mesh);
+      set_next(border, border_from[soup.indices[c]], mesh);
+      set_halfedge(vertex_of_point[soup.indices[c]], border, mesh);
+    }
+}
+
+/// The same for `Surface_mesh`, with every element created at once (one resize of each
+/// property array instead of a push_back per element); the result is the mesh the
+/// generic version builds. Edge e of the mesh is the e-th corner without an earlier
+/// twin, its halfedge 2e runs like that corner.
+template <typename P, typename Point>
+void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
+                const Soup_topology& topology, CGAL::Surface_mesh<P>& mesh,
+                std::vector<typename CGAL::Surface_mesh<P>::Vertex_index>& vertex_of_point,
+                std::vector<typename CGAL::Surface_mesh<P>::Face_index>& face_of_polygon)
+{
+  typedef CGAL::Surface_mesh<P> Mesh;
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::Halfedge_index Halfedge_index;
+  typedef typename Mesh::Face_index Face_index;
+  const std::size_t nc = soup.indices.size();
+  std::vector<std::uint32_t> halfedge_of(nc);
+  std::uint32_t edges = 0;
+  for(std::uint32_t c = 0; c < nc; ++c)
+  {
+    const std::uint32_t t = topology.twin[c];
+    halfedge_of[c] = (t != no_corner && t < c) ? (halfedge_of[t] ^ 1u) : 2 * edges++;
+  }
+  mesh.clear();
+  mesh.resize(static_cast<typename Mesh::size_type>(points.size()), edges,
+              static_cast<typename Mesh::size_type>(soup.number_of_faces()));
+  vertex_of_point.resize(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    vertex_of_point[i] = Vertex_index(static_cast<typename Mesh::size_type>(i));
+    mesh.point(vertex_of_point[i]) = points[i];
+  }
+  const auto H = [](std::uint32_t h) { return Halfedge_index(h); };
+  face_of_polygon.resize(soup.number_of_faces());
+  std::vector<std::uint32_t> border_from(points.size(), no_corner);
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+  {
+    const Face_index face(static_cast<typename Mesh::size_type>(f));
+    face_of_polygon[f] = face;
+    const std::uint32_t first = soup.begin[f], last = soup.begin[f + 1];
+    for(std::uint32_t c = first; c < last; ++c)
+    {
+      const std::uint32_t n = c + 1 == last ? first : c + 1;
+      const Halfedge_index h = H(halfedge_of[c]);
+      const Vertex_index target = vertex_of_point[soup.indices[n]];
+      mesh.set_target(h, target);
+      mesh.set_face(h, face);
+      mesh.set_next(h, H(halfedge_of[n]));
+      mesh.set_halfedge(target, h);
+      if(topology.twin[c] == no_corner)
+      {
+        const Halfedge_index border = H(halfedge_of[c] ^ 1u);
+        mesh.set_target(border, vertex_of_point[soup.indices[c]]);
+        mesh.set_face(border, Mesh::null_face());
+        border_from[soup.indices[n]] = halfedge_of[c] ^ 1u;
+      }
+    }
+    mesh.set_halfedge(face, H(halfedge_of[last - 1])); // as in the generic version
+  }
+  for(std::uint32_t c = 0; c < nc; ++c)
+    if(topology.twin[c] == no_corner)
+    {
+      const Halfedge_index border = H(halfedge_of[c] ^ 1u);
+      mesh.set_next(border, H(border_from[soup.indices[c]]));
+      mesh.set_halfedge(vertex_of_point[soup.indices[c]], border);
+    }
+}
+
+} // namespace internal
+} // namespace fs_demo
+
+#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_SOUP_TOPOLOGY_H
