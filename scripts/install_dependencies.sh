@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev
   doxygen
   ccache
+  clang libclang-rt-14-dev   # libFuzzer and the sanitizers (fuzz targets in the test command)
 )
 
 missing=()

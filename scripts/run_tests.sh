@@ -1,13 +1,28 @@
 #!/usr/bin/env bash
 # One command for the whole test suite on a fresh Debian 12 machine:
-# installs the dependencies, configures, builds and runs ctest.
+# installs the dependencies, configures, builds and runs ctest; then builds the libFuzzer
+# targets with Clang, AddressSanitizer and UndefinedBehaviorSanitizer in BUILD_DIR-fuzz
+# and runs them (every seed, then FUZZ_SECONDS of fuzzing per target, default 20).
 # Usage: scripts/run_tests.sh [BUILD_DIR]   (default: build)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="${1:-$here/build}"
+build="$(realpath -m "${1:-$here/build}")"
 "$here/scripts/install_dependencies.sh"
 jobs="$(nproc 2>/dev/null || echo 2)"
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFEATURE_SEGMENTATION_BUILD_TESTS=ON
 cmake --build "$build" -j "$jobs"
 cd "$build"
+ctest --output-on-failure -j "$jobs"
+
+# Fuzzing under the sanitizers: the readers, the edit-script and feature-line parsers and
+# the whole pipeline on small meshes (the sanitizer subset of the suite; the whole suite
+# builds with -DFEATURE_SEGMENTATION_SANITIZE=ON, see the README).
+fuzz_build="${build%/}-fuzz"
+CXX=clang++ cmake -S "$here" -B "$fuzz_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DFEATURE_SEGMENTATION_BUILD_FUZZERS=ON -DFEATURE_SEGMENTATION_BUILD_TESTS=OFF \
+  -DFEATURE_SEGMENTATION_BUILD_EXAMPLES=OFF -DFEATURE_SEGMENTATION_BUILD_DEMO=OFF \
+  -DFEATURE_SEGMENTATION_BUILD_BENCHMARKS=OFF -DFEATURE_SEGMENTATION_BUILD_DOC=OFF \
+  -DFEATURE_SEGMENTATION_FUZZ_SECONDS="${FUZZ_SECONDS:-20}"
+cmake --build "$fuzz_build" -j "$jobs"
+cd "$fuzz_build"
 ctest --output-on-failure -j "$jobs"

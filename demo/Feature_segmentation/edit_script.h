@@ -153,6 +153,8 @@ inline Script_region script_region(const std::vector<std::string>& tokens, std::
 
 } // namespace internal
 
+inline Edit_script read_edit_script(std::istream& in, const std::string& path);
+
 /// Reads and checks the script `path` (everything but the range of face indices, which
 /// needs the mesh: see `check_face_indices()`).
 /// \throws Edit_script_error on the first mistake
@@ -167,6 +169,13 @@ inline Edit_script read_edit_script(const std::string& path)
   std::ifstream in(path);
   if(!in)
     throw Edit_script_error(path + ": cannot be opened");
+  return read_edit_script(in, path);
+}
+
+/// Reads and checks the script in `in`; `path` names it in messages.
+/// \throws Edit_script_error on the first mistake
+inline Edit_script read_edit_script(std::istream& in, const std::string& path)
+{
   Edit_script script;
   script.path = path;
   std::size_t undoable = 0; // edits that an 'undo' can still take back

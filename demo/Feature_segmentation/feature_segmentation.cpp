@@ -40,6 +40,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <unistd.h> // getpid: names of temporary output files
 #include <exception>
 #include <functional>
 #include <filesystem>
@@ -610,17 +611,34 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "}\n";
 }
 
-// Writes a file through `write`, failing with a clear message when it cannot.
+// Writes a file through `write`, atomically: into a temporary file next to it, renamed
+// over `path` once complete, so that an interrupted run never leaves a half-written file
+// under the final name. Fails with a clear message when it cannot.
 template <typename Write>
 void write_file(const std::filesystem::path& path, Write&& write)
 {
-  std::ofstream out(path);
-  if(!out)
-    throw std::runtime_error(path.string() + ": cannot be opened for writing");
-  write(out);
-  out.close();
-  if(!out)
-    throw std::runtime_error(path.string() + ": write failed");
+  std::filesystem::path temporary = path;
+  temporary += ".partial-" + std::to_string(static_cast<long long>(::getpid()));
+  try
+  {
+    std::ofstream out(temporary);
+    if(!out)
+      throw std::runtime_error(path.string() + ": cannot be opened for writing");
+    write(out);
+    out.close();
+    if(!out)
+      throw std::runtime_error(path.string() + ": write failed (disk full?)");
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if(ec)
+      throw std::runtime_error(path.string() + ": cannot be written (" + ec.message() + ")");
+  }
+  catch(...)
+  {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
 }
 
 int run(const Options& options)
@@ -787,6 +805,9 @@ int run(const Options& options)
   results.number_of_refined_faces = num_faces(refined);
 
   const sfs::path dir(options.output_dir);
+  // summary.json marks a complete set of outputs: a previous run's goes first, and the
+  // new one is written last.
+  sfs::remove(dir / "summary.json", ec);
   timer.run("write", [&]() {
     write_file(dir / "feature_lines.polylines.txt",
                [&](std::ostream& os) { FS::write_polylines(os, working_mesh, lines); });

@@ -14,13 +14,13 @@
 
 #include "mesh_io/read_mesh_soup.h"
 #include "mesh_io/soup_topology.h"
+#include "mesh_io/triangulate_polygon.h"
 
 #include <CGAL/Feature_segmentation/input_checks.h>
 
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -264,42 +264,48 @@ std::size_t orient_and_build(const std::string& path, const Mesh_soup& soup,
   return points.size() - number_of_points;
 }
 
-// A triangulation visitor that records the triangles made from a face, in the order of
-// their creation.
+// `true` if no two vertices of the triangles `subfaces` are joined by two edges. CGAL's
+// triangulate_face can add, in a non-planar or self-overlapping polygon, a diagonal
+// between two vertices that an edge outside the polygon already joins, and reports
+// success: the mesh is then not a surface any more.
 template <typename Mesh>
-class Subface_visitor
+bool has_simple_edges(const std::vector<typename boost::graph_traits<Mesh>::face_descriptor>& subfaces,
+                      const Mesh& mesh)
 {
-public:
-  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
-
-  explicit Subface_visitor(std::vector<face_descriptor>& subfaces) : m_subfaces(&subfaces) {}
-
-  void before_subface_creations(face_descriptor) { m_subfaces->clear(); }
-  void after_subface_created(face_descriptor f) { m_subfaces->push_back(f); }
-  void after_subface_creations() {}
-
-private:
-  std::vector<face_descriptor>* m_subfaces; // the visitor is copied: the result lives with the caller
-};
+  const std::size_t bound = num_halfedges(mesh); // a broken mesh must not loop forever
+  for(const auto f : subfaces)
+    for(const auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      std::size_t joining = 0, steps = 0;
+      auto g = h;
+      do
+      {
+        if(target(g, mesh) == target(h, mesh) && ++joining > 1)
+          return false;
+        g = next(opposite(g, mesh), mesh); // the next halfedge leaving source(h)
+        if(++steps > bound)
+          return false;
+      } while(g != h);
+    }
+  return true;
+}
 
 } // namespace internal
 
-/// Reads `path` into `mesh` (which is cleared first) and returns what was repaired;
-/// `correspondence` receives where each point and face of the file went.
-/// Throws `Input_error` when the file cannot be read or the mesh cannot be processed.
+/// Turns the polygon soup of the file `path` (as a reader gave it) into `mesh` (which
+/// is cleared first) and returns what was repaired; `correspondence` receives where each
+/// point and face of the file went. `path` only names the file in messages.
+/// Throws `Input_error` when the soup cannot be made a mesh the pipeline can process.
 template <typename Mesh>
-Read_report read_input_mesh(const std::string& path, Mesh& mesh,
-                            Input_correspondence<Mesh>& correspondence)
+Read_report mesh_from_soup(const std::string& path, Mesh_soup& soup, Mesh& mesh,
+                           Input_correspondence<Mesh>& correspondence)
 {
   typedef typename boost::property_traits<
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
-  namespace PMP = CGAL::Polygon_mesh_processing;
 
   Read_report report;
-  Mesh_soup soup;
-  read_mesh_soup(path, soup);
   report.format = soup.format;
   report.number_of_file_points = soup.points.size();
   report.number_of_file_faces = soup.number_of_faces();
@@ -366,15 +372,24 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
     }
     ++report.number_of_triangulated_faces;
     subfaces.clear();
-    if(!PMP::triangulate_face(face_of_polygon[p], mesh,
-                              CGAL::parameters::visitor(internal::Subface_visitor<Mesh>(subfaces))) ||
-       subfaces.empty())
-      throw Input_error(path + ": face " + std::to_string(file_face_of_polygon[p]) +
-                        " (a quad or polygon) cannot be triangulated");
+    const std::string name = path + ": face " + std::to_string(file_face_of_polygon[p]) +
+                             " (a polygon of " + std::to_string(soup.face_size(p)) + " vertices)";
+    if(soup.face_size(p) > internal::max_polygon_size)
+      throw Input_error(name + " has more than " + std::to_string(internal::max_polygon_size) +
+                        " vertices: it is not triangulated");
+    if(!internal::triangulate_polygon(face_of_polygon[p], mesh, subfaces) || subfaces.empty())
+      throw Input_error(name + " cannot be triangulated: it is not a simple polygon in its plane");
+    if(!internal::has_simple_edges(subfaces, mesh))
+      throw Input_error(name + " cannot be triangulated: a diagonal would join two vertices"
+                        " that an edge outside it already joins");
     face_of_polygon[p] = subfaces.front();
     correspondence.triangles.insert(correspondence.triangles.end(), subfaces.begin(), subfaces.end());
   }
   polygon_begin[number_of_polygons] = correspondence.triangles.size();
+  // A last guard: later stages walk around vertices and would not stop on a broken mesh.
+  if(report.number_of_triangulated_faces > 0 && !CGAL::is_valid_polygon_mesh(mesh))
+    throw Input_error(path + ": the quads or polygons of the file cannot be triangulated into a"
+                      " surface (non-planar or self-overlapping polygons)");
   if(report.number_of_triangulated_faces > 0)
     report.notices.push_back("triangulated " + std::to_string(report.number_of_triangulated_faces) +
                              " faces (quads or polygons)");
@@ -406,6 +421,18 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh,
     throw Input_error(path + ": " + e.what());
   }
   return report;
+}
+
+/// Reads `path` into `mesh` (which is cleared first) and returns what was repaired;
+/// `correspondence` receives where each point and face of the file went.
+/// Throws `Input_error` when the file cannot be read or the mesh cannot be processed.
+template <typename Mesh>
+Read_report read_input_mesh(const std::string& path, Mesh& mesh,
+                            Input_correspondence<Mesh>& correspondence)
+{
+  Mesh_soup soup;
+  read_mesh_soup(path, soup);
+  return mesh_from_soup(path, soup, mesh, correspondence);
 }
 
 /// Reads `path` into `mesh`, without the correspondence to the file.

@@ -28,11 +28,26 @@
 
 namespace fs_demo {
 
+template <typename Mesh>
+std::size_t read_user_feature_lines(std::istream& in, const std::string& path, const Mesh& mesh,
+                                    CGAL::Feature_segmentation::Feature_lines<Mesh>& lines);
+
 /// Reads the polylines of `path` and appends them to `lines` as USER lines; returns the
 /// number of lines added. Throws `Input_error` on an unreadable file, a malformed line, a
 /// point that is not a mesh vertex or a segment that is not a mesh edge.
 template <typename Mesh>
 std::size_t read_user_feature_lines(const std::string& path, const Mesh& mesh,
+                                    CGAL::Feature_segmentation::Feature_lines<Mesh>& lines)
+{
+  internal::check_readable_file(path);
+  std::ifstream in(path);
+  return read_user_feature_lines(in, path, mesh, lines);
+}
+
+/// Reads the polylines of `in` (the content of the file `path`, which names it in
+/// messages) and appends them to `lines`, as the overload above.
+template <typename Mesh>
+std::size_t read_user_feature_lines(std::istream& in, const std::string& path, const Mesh& mesh,
                                     CGAL::Feature_segmentation::Feature_lines<Mesh>& lines)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
@@ -45,9 +60,6 @@ std::size_t read_user_feature_lines(const std::string& path, const Mesh& mesh,
   typedef CGAL::Orthogonal_k_neighbor_search<Traits> Neighbor_search;
   typedef typename Neighbor_search::Tree Tree;
   typedef typename Neighbor_search::Distance Distance;
-
-  internal::check_readable_file(path);
-  std::ifstream in(path);
 
   const VPM vpm = get(CGAL::vertex_point, mesh);
   Tree tree(vertices(mesh).begin(), vertices(mesh).end(), typename Tree::Splitter(),

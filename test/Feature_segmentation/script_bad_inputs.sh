@@ -187,6 +187,10 @@ case_ folded              "$bad/folded.off"              'face 0 \(line 7\) and 
 case_ collinear           "$bad/collinear.off"           'face 0 \(line 7\) is degenerate \(its points are collinear: zero area\)'
 case_ repeated_index      "$bad/repeated_index.off"      'face 0 \(line 6\) is degenerate \(it uses a vertex twice\)'
 case_ same_position       "$bad/same_position.off"       'face 0 \(line 7\) is degenerate \(two of its vertices are at the same position\)'
+# A pentagon whose last edge crosses its second (found by fuzzing: CGAL 5.5's triangulation
+# of such a polygon reads uninitialised memory).
+p 'OFF\n5 1 0\n0 0 0\n2 0 0\n0 2 0\n2 2 0\n1 3 0\n5 0 1 2 3 4\n' > "$bad/self_intersecting.off"
+case_ self_intersecting   "$bad/self_intersecting.off"   'face 0 \(a polygon of 5 vertices\) cannot be triangulated: it is not a simple polygon in its plane'
 
 echo "script_bad_inputs: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -138,10 +138,14 @@ public:
       throw Input_error(path + ": the file is empty");
   }
 
+  /// A view of `size` bytes at `data`, which the caller keeps alive (for readers of
+  /// content already in memory, as the fuzzing targets have it).
+  File_content(const char* data, std::size_t size) : m_data(data), m_size(size), m_owns(false) {}
+
   ~File_content()
   {
 #if FS_DEMO_HAS_MMAP
-    if(m_data != nullptr)
+    if(m_owns && m_data != nullptr)
       ::munmap(const_cast<char*>(m_data), m_size);
 #endif
   }
@@ -155,6 +159,7 @@ public:
 private:
   const char* m_data = nullptr;
   std::size_t m_size = 0;
+  bool m_owns = true;
 #if !FS_DEMO_HAS_MMAP
   std::string m_buffer;
 #endif

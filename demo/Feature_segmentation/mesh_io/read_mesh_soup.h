@@ -32,6 +32,38 @@ inline std::string lower_case_extension(const std::string& path)
 
 } // namespace internal
 
+/// Reads `content`, the bytes of a file in `format` ("off", "obj", "ply" or "stl"), into
+/// `soup`; `path` only names the file in messages. Throws as the other overload.
+inline void read_mesh_soup(const std::string& path, const std::string& format,
+                           const internal::File_content& content, Mesh_soup& soup)
+{
+  soup = Mesh_soup();
+  if(content.size() == 0)
+    throw Input_error(path + ": the file is empty");
+  try
+  {
+    if(format == "off")
+      internal::read_off(path, content, soup);
+    else if(format == "obj")
+      internal::read_obj(path, content, soup);
+    else if(format == "ply")
+      internal::read_ply(path, content, soup);
+    else if(format == "stl")
+      internal::read_stl(path, content, soup);
+    else
+      throw Input_error(path + ": unknown format '" + format + "'");
+  }
+  catch(const std::bad_alloc&)
+  {
+    // Counts are checked against the file size first, so this is a machine without
+    // memory for a file of this size.
+    throw Input_error(path + ": out of memory while reading " + std::to_string(content.size()) +
+                      " bytes");
+  }
+  if(soup.number_of_faces() == 0)
+    throw Input_error(path + ": contains no faces");
+}
+
 /// Reads `path` into `soup`. Throws `Input_error` ("<file>[:<line>]: <reason>") when the
 /// file cannot be read, its format is not known, or its content is malformed; on
 /// success every index is in range and every coordinate finite. Faces with fewer than 3
@@ -45,26 +77,7 @@ inline void read_mesh_soup(const std::string& path, Mesh_soup& soup)
                       (format.empty() ? std::string("(no extension)") : "'." + format + "'") +
                       " (expected .off, .obj, .ply or .stl)");
   const internal::File_content content(path);
-  try
-  {
-    if(format == "off")
-      internal::read_off(path, content, soup);
-    else if(format == "obj")
-      internal::read_obj(path, content, soup);
-    else if(format == "ply")
-      internal::read_ply(path, content, soup);
-    else
-      internal::read_stl(path, content, soup);
-  }
-  catch(const std::bad_alloc&)
-  {
-    // Counts are checked against the file size first, so this is a machine without
-    // memory for a file of this size.
-    throw Input_error(path + ": out of memory while reading " + std::to_string(content.size()) +
-                      " bytes");
-  }
-  if(soup.number_of_faces() == 0)
-    throw Input_error(path + ": contains no faces");
+  read_mesh_soup(path, format, content, soup);
 }
 
 } // namespace fs_demo

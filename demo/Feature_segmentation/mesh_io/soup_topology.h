@@ -212,8 +212,15 @@ Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
   topology.twin.assign(soup.indices.size(), no_corner);
   // The vertex opposite the edge from corner c: for a triangle, its third vertex; for a
   // polygon, the one after the edge, as in the fan that triangulates it.
-  const auto opposite = [&](std::uint32_t c) {
-    return soup.indices[next_corner(soup, vc, next_corner(soup, vc, c))];
+  // A point of the face of corner c off the line of its edge, searched from the corner
+  // after the edge on, as in the fan that triangulates the face (for a triangle, its
+  // third point); null if the whole face is on that line, which check_faces excludes.
+  const auto apex = [&](std::uint32_t c, const Point& p, const Point& q) -> const Point* {
+    const std::uint32_t start = next_corner(soup, vc, c);
+    for(std::uint32_t k = next_corner(soup, vc, start); k != start; k = next_corner(soup, vc, k))
+      if(!CGAL::collinear(p, q, points[soup.indices[k]]))
+        return &points[soup.indices[k]];
+    return nullptr;
   };
   for(std::uint32_t c = 0; c < soup.indices.size(); ++c)
   {
@@ -256,10 +263,10 @@ Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
     {
       const Point& p = points[a];
       const Point& q = points[b];
-      const Point& r = points[opposite(c)];
-      const Point& s = points[same_direction ? opposite(other)
-                                             : soup.indices[previous_corner(soup, vc, other)]];
-      if(CGAL::coplanar(p, q, r, s) && CGAL::coplanar_orientation(p, q, r, s) == CGAL::POSITIVE)
+      const Point* r = apex(c, p, q);
+      const Point* s = apex(other, p, q);
+      if(r != nullptr && s != nullptr && CGAL::coplanar(p, q, *r, *s) &&
+         CGAL::coplanar_orientation(p, q, *r, *s) == CGAL::POSITIVE)
         throw Input_error(path + ": " + face_name(soup, vc.face_of[c]) + " and " +
                           face_name(soup, vc.face_of[other]) +
                           " overlap (folded onto each other across an edge)");
