@@ -37,7 +37,7 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for t in "${targets[@]}"; do
   log="$out/$t.log"
   stat() { sed -n "s/^stat::$1: *//p" "$log" | tail -1; }
-  last="$(grep -E '^#[0-9]+ +(DONE|pulse|NEW|REDUCE)' "$log" | tail -1)"
+  last="$(grep -E '^#[0-9]+[[:space:]]+(DONE|pulse|NEW|REDUCE)' "$log" | tail -1)"
   cov="$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")"
   ft="$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")"
   corp="$(sed -n 's/.* corp: \([0-9]*\)\/.*/\1/p' <<<"$last")"

@@ -253,6 +253,8 @@ inline void read_ply(const std::string& path, const File_content& content, Mesh_
   double point[3] = {0, 0, 0};
   for(const Ply_element& e : elements)
   {
+    if(e.properties.empty())
+      continue; // no bytes in the body, whatever its count (fuzzing found a count of 88e9)
     const bool is_vertex = &e == vertex_element;
     const bool is_face = &e == face_element;
     if(is_vertex)
