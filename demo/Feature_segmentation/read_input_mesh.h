@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -87,7 +88,12 @@ namespace internal {
 // message (used by the readers of the programs' other input files).
 inline void check_readable_file(const std::string& path)
 {
-  const File_content content(path); // throws the message
+  check_regular_file(path);
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw Input_error(path + ": cannot be opened for reading");
+  if(in.peek() == std::ifstream::traits_type::eof())
+    throw Input_error(path + ": the file is empty");
 }
 
 // `true` if all points of the polygon lie on one line (or coincide): such a face has no

@@ -23,6 +23,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include <CGAL/assertions.h>
@@ -71,6 +72,22 @@ namespace internal {
 // indices would need tens of gigabytes, far beyond what the pipeline handles anyway.
 constexpr std::size_t max_soup_count = std::numeric_limits<std::uint32_t>::max() - 1;
 
+/// Refuses, with its own message, a path that is missing, a directory or not a regular
+/// file (a FIFO, socket or device): what `File_content` and the programs' other file
+/// readers check before opening.
+inline void check_regular_file(const std::string& path)
+{
+  namespace sfs = std::filesystem;
+  std::error_code ec;
+  const sfs::file_status st = sfs::status(path, ec);
+  if(!sfs::exists(st))
+    throw Input_error(path + ": no such file");
+  if(sfs::is_directory(st))
+    throw Input_error(path + ": is a directory, not a mesh file");
+  if(!sfs::is_regular_file(st))
+    throw Input_error(path + ": is not a regular file (a FIFO, socket or device cannot be read)");
+}
+
 /// The whole content of a regular file, mapped into memory read-only (POSIX) or read
 /// into a buffer (elsewhere). Anything else (missing, a directory, a FIFO, a device, no
 /// read permission) is refused before a byte is read.
@@ -79,15 +96,7 @@ class File_content
 public:
   explicit File_content(const std::string& path)
   {
-    namespace sfs = std::filesystem;
-    std::error_code ec;
-    const sfs::file_status st = sfs::status(path, ec);
-    if(!sfs::exists(st))
-      throw Input_error(path + ": no such file");
-    if(sfs::is_directory(st))
-      throw Input_error(path + ": is a directory, not a mesh file");
-    if(!sfs::is_regular_file(st))
-      throw Input_error(path + ": is not a regular file (a FIFO, socket or device cannot be read)");
+    check_regular_file(path);
 #if FS_DEMO_HAS_MMAP
     const int fd = ::open(path.c_str(), O_RDONLY);
     if(fd < 0)
@@ -116,7 +125,8 @@ public:
     std::FILE* file = std::fopen(path.c_str(), "rb");
     if(file == nullptr)
       throw Input_error(path + ": cannot be opened for reading (" + std::strerror(errno) + ")");
-    const std::uintmax_t size = sfs::file_size(path, ec);
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
     try
     {
       m_buffer.resize(ec ? 0 : static_cast<std::size_t>(size));
@@ -182,14 +192,21 @@ inline std::string quoted(std::string_view token)
 
 inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' || c == '\0'; }
 
-/// Floating-point number in `token` (a leading '+' allowed); `false` if it is not one.
-/// "nan" and "inf" are numbers here: the caller rejects them with a better message.
-inline bool parse_double(std::string_view token, double& value)
+// The characters of `token` after an optional leading '+' (from_chars takes no '+').
+inline std::pair<const char*, const char*> without_plus(std::string_view token)
 {
   const char* first = token.data();
   const char* last = first + token.size();
   if(first != last && *first == '+')
     ++first;
+  return {first, last};
+}
+
+/// Floating-point number in `token` (a leading '+' allowed); `false` if it is not one.
+/// "nan" and "inf" are numbers here: the caller rejects them with a better message.
+inline bool parse_double(std::string_view token, double& value)
+{
+  const auto [first, last] = without_plus(token);
   if(first == last)
     return false;
   const std::from_chars_result r = std::from_chars(first, last, value);
@@ -204,10 +221,7 @@ inline bool parse_double(std::string_view token, double& value)
 /// Integer in `token` (a leading '+' allowed); `false` if it is not one or overflows.
 inline bool parse_integer(std::string_view token, long long& value)
 {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  if(first != last && *first == '+')
-    ++first;
+  const auto [first, last] = without_plus(token);
   if(first == last)
     return false;
   const std::from_chars_result r = std::from_chars(first, last, value);
@@ -444,6 +458,83 @@ private:
   }
 
   std::size_t m_line;
+};
+
+/// Exact merging of points at the same position, over the points of a soup: an open
+/// addressing table of point indices (no allocation per point), keyed by the bits of
+/// the coordinates with -0 taken as 0. Coordinates are finite. Used by the STL reader
+/// (points merged as they are read) and by the repairs (points of any file).
+class Position_table
+{
+public:
+  explicit Position_table(const std::vector<std::array<double, 3> >& points,
+                          std::size_t expected = 0)
+    : m_points(&points)
+  {
+    std::size_t size = 16;
+    while(size < 2 * expected)
+      size *= 2;
+    m_slots.assign(size, empty);
+  }
+
+  /// The first point, among those given to this function so far, at the position of
+  /// point `i`; `i` itself (now recorded) if there is none.
+  std::uint32_t first(std::uint32_t i)
+  {
+    if(2 * (m_used + 1) > m_slots.size())
+      grow();
+    const std::array<double, 3>& p = (*m_points)[i];
+    for(std::size_t slot = hash(p) & (m_slots.size() - 1);; slot = (slot + 1) & (m_slots.size() - 1))
+    {
+      const std::uint32_t j = m_slots[slot];
+      if(j == empty)
+      {
+        m_slots[slot] = i;
+        ++m_used;
+        return i;
+      }
+      const std::array<double, 3>& q = (*m_points)[j];
+      if(p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
+        return j;
+    }
+  }
+
+private:
+  static constexpr std::uint32_t empty = std::uint32_t(-1);
+
+  static std::uint64_t hash(const std::array<double, 3>& p)
+  {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for(double v : p)
+    {
+      if(v == 0)
+        v = 0; // -0 and 0 are one position
+      std::uint64_t b;
+      std::memcpy(&b, &v, sizeof b);
+      h = (h ^ b) * 0xbf58476d1ce4e5b9ull;
+      h ^= h >> 29;
+    }
+    return h;
+  }
+
+  void grow()
+  {
+    std::vector<std::uint32_t> old(2 * m_slots.size(), empty);
+    old.swap(m_slots);
+    for(const std::uint32_t j : old)
+      if(j != empty)
+        for(std::size_t slot = hash((*m_points)[j]) & (m_slots.size() - 1);;
+            slot = (slot + 1) & (m_slots.size() - 1))
+          if(m_slots[slot] == empty)
+          {
+            m_slots[slot] = j;
+            break;
+          }
+  }
+
+  const std::vector<std::array<double, 3> >* m_points;
+  std::vector<std::uint32_t> m_slots;
+  std::size_t m_used = 0;
 };
 
 /// Appends the point (x, y, z) to `soup`.

@@ -251,6 +251,15 @@ inline void read_ply(const std::string& path, const File_content& content, Mesh_
   const char* p = in.position();
   const char* const end = content.data() + content.size();
   double point[3] = {0, 0, 0};
+  // The next binary value of type `t`, or the error of a body that ends too early.
+  const auto next_binary = [&](const Ply_type& t, const auto& where) {
+    if(std::size_t(end - p) < t.size)
+      throw Input_error(path + ": the body ends " + where() +
+                        "the file is truncated or its counts are wrong");
+    const double value = ply_binary_value(p, t, swap);
+    p += t.size;
+    return value;
+  };
   for(const Ply_element& e : elements)
   {
     if(e.properties.empty())
@@ -272,13 +281,7 @@ inline void read_ply(const std::string& path, const File_content& content, Mesh_
         {
           double count;
           if(binary)
-          {
-            if(std::size_t(end - p) < prop.count_type.size)
-              throw Input_error(path + ": the body ends " + where() +
-                                "the file is truncated or its counts are wrong");
-            count = ply_binary_value(p, prop.count_type, swap);
-            p += prop.count_type.size;
-          }
+            count = next_binary(prop.count_type, where);
           else
           {
             count = double(in.count("a list count", in.bytes_left() / 2 + 1, true));
@@ -297,13 +300,7 @@ inline void read_ply(const std::string& path, const File_content& content, Mesh_
         {
           double value;
           if(binary)
-          {
-            if(std::size_t(end - p) < prop.type.size)
-              throw Input_error(path + ": the body ends " + where() +
-                                "the file is truncated or its counts are wrong");
-            value = ply_binary_value(p, prop.type, swap);
-            p += prop.type.size;
-          }
+            value = next_binary(prop.type, where);
           else
           {
             const std::string_view w = in.word_across_lines();

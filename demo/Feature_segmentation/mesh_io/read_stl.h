@@ -13,56 +13,32 @@
 #include <cstring>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 
 namespace fs_demo {
 namespace internal {
 
-// Exact merging of equal points: the key is the coordinates' bits, with -0 taken as 0
-// (they are the same point). Coordinates are finite here.
+// STL stores each triangle's own points: a point equal to an earlier one is merged into
+// it as it is read, so that points are numbered in order of first appearance.
 class Stl_point_merger
 {
 public:
-  explicit Stl_point_merger(Mesh_soup& soup, std::size_t expected_points) : m_soup(&soup)
-  {
-    m_index.reserve(expected_points);
-  }
+  Stl_point_merger(Mesh_soup& soup, std::size_t expected_points)
+    : m_soup(&soup), m_table(soup.points, expected_points)
+  {}
 
   std::uint32_t index(double x, double y, double z)
   {
-    const Key key{{bits(x), bits(y), bits(z)}};
-    const auto it = m_index.emplace(key, static_cast<std::uint32_t>(m_soup->points.size()));
-    if(it.second)
-      add_point(*m_soup, x, y, z);
-    return it.first->second;
+    add_point(*m_soup, x, y, z);
+    const std::uint32_t last = static_cast<std::uint32_t>(m_soup->points.size() - 1);
+    const std::uint32_t first = m_table.first(last);
+    if(first != last)
+      m_soup->points.pop_back();
+    return first;
   }
 
 private:
-  typedef std::array<std::uint64_t, 3> Key;
-  struct Key_hash
-  {
-    std::size_t operator()(const Key& k) const
-    {
-      std::uint64_t h = 0x9e3779b97f4a7c15ull;
-      for(std::uint64_t v : k)
-      {
-        h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-        h *= 0xbf58476d1ce4e5b9ull;
-      }
-      return static_cast<std::size_t>(h ^ (h >> 31));
-    }
-  };
-  static std::uint64_t bits(double v)
-  {
-    if(v == 0)
-      v = 0; // -0 -> +0
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-  }
-
   Mesh_soup* m_soup;
-  std::unordered_map<Key, std::uint32_t, Key_hash> m_index;
+  Position_table m_table;
 };
 
 inline std::uint32_t little_endian_32(const char* b)

@@ -13,16 +13,13 @@
 #include "mesh_soup.h"
 
 #include <CGAL/Kernel/global_functions.h>
-#include <CGAL/Surface_mesh/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace fs_demo {
@@ -71,48 +68,13 @@ inline std::uint32_t previous_corner(const Mesh_soup& soup, const Vertex_corners
 }
 
 /// Merges points at the same position into the first of them: `first_at_position[i]` is
-/// the first point with the coordinates of point `i`. Coordinates are finite. An open
-/// addressing table of point indices: no allocation per point.
+/// the first point with the coordinates of point `i`. Coordinates are finite.
 inline std::vector<std::uint32_t> first_at_position(const Mesh_soup& soup)
 {
-  const auto hash = [](const std::array<double, 3>& p) {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for(double v : p)
-    {
-      if(v == 0)
-        v = 0; // -0 and 0 are one position
-      std::uint64_t b;
-      std::memcpy(&b, &v, sizeof b);
-      h = (h ^ b) * 0xbf58476d1ce4e5b9ull;
-      h ^= h >> 29;
-    }
-    return h;
-  };
-  const std::size_t n = soup.points.size();
-  std::size_t size = 16;
-  while(size < 2 * n)
-    size *= 2;
-  std::vector<std::uint32_t> table(size, no_corner);
-  std::vector<std::uint32_t> result(n);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const std::array<double, 3>& p = soup.points[i];
-    for(std::size_t slot = hash(p) & (size - 1);; slot = (slot + 1) & (size - 1))
-    {
-      const std::uint32_t j = table[slot];
-      if(j == no_corner)
-      {
-        table[slot] = result[i] = static_cast<std::uint32_t>(i);
-        break;
-      }
-      const std::array<double, 3>& q = soup.points[j];
-      if(p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
-      {
-        result[i] = j;
-        break;
-      }
-    }
-  }
+  Position_table table(soup.points, soup.points.size());
+  std::vector<std::uint32_t> result(soup.points.size());
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    result[i] = table.first(static_cast<std::uint32_t>(i));
   return result;
 }
 
@@ -390,73 +352,6 @@ void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
       const halfedge_descriptor border = opposite(halfedge_of[c], mesh);
       set_next(border, border_from[soup.indices[c]], mesh);
       set_halfedge(vertex_of_point[soup.indices[c]], border, mesh);
-    }
-}
-
-/// The same for `Surface_mesh`, with every element created at once (one resize of each
-/// property array instead of a push_back per element); the result is the mesh the
-/// generic version builds. Edge e of the mesh is the e-th corner without an earlier
-/// twin, its halfedge 2e runs like that corner.
-template <typename P, typename Point>
-void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
-                const Soup_topology& topology, CGAL::Surface_mesh<P>& mesh,
-                std::vector<typename CGAL::Surface_mesh<P>::Vertex_index>& vertex_of_point,
-                std::vector<typename CGAL::Surface_mesh<P>::Face_index>& face_of_polygon)
-{
-  typedef CGAL::Surface_mesh<P> Mesh;
-  typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename Mesh::Halfedge_index Halfedge_index;
-  typedef typename Mesh::Face_index Face_index;
-  const std::size_t nc = soup.indices.size();
-  std::vector<std::uint32_t> halfedge_of(nc);
-  std::uint32_t edges = 0;
-  for(std::uint32_t c = 0; c < nc; ++c)
-  {
-    const std::uint32_t t = topology.twin[c];
-    halfedge_of[c] = (t != no_corner && t < c) ? (halfedge_of[t] ^ 1u) : 2 * edges++;
-  }
-  mesh.clear();
-  mesh.resize(static_cast<typename Mesh::size_type>(points.size()), edges,
-              static_cast<typename Mesh::size_type>(soup.number_of_faces()));
-  vertex_of_point.resize(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    vertex_of_point[i] = Vertex_index(static_cast<typename Mesh::size_type>(i));
-    mesh.point(vertex_of_point[i]) = points[i];
-  }
-  const auto H = [](std::uint32_t h) { return Halfedge_index(h); };
-  face_of_polygon.resize(soup.number_of_faces());
-  std::vector<std::uint32_t> border_from(points.size(), no_corner);
-  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
-  {
-    const Face_index face(static_cast<typename Mesh::size_type>(f));
-    face_of_polygon[f] = face;
-    const std::uint32_t first = soup.begin[f], last = soup.begin[f + 1];
-    for(std::uint32_t c = first; c < last; ++c)
-    {
-      const std::uint32_t n = c + 1 == last ? first : c + 1;
-      const Halfedge_index h = H(halfedge_of[c]);
-      const Vertex_index target = vertex_of_point[soup.indices[n]];
-      mesh.set_target(h, target);
-      mesh.set_face(h, face);
-      mesh.set_next(h, H(halfedge_of[n]));
-      mesh.set_halfedge(target, h);
-      if(topology.twin[c] == no_corner)
-      {
-        const Halfedge_index border = H(halfedge_of[c] ^ 1u);
-        mesh.set_target(border, vertex_of_point[soup.indices[c]]);
-        mesh.set_face(border, Mesh::null_face());
-        border_from[soup.indices[n]] = halfedge_of[c] ^ 1u;
-      }
-    }
-    mesh.set_halfedge(face, H(halfedge_of[last - 1])); // as in the generic version
-  }
-  for(std::uint32_t c = 0; c < nc; ++c)
-    if(topology.twin[c] == no_corner)
-    {
-      const Halfedge_index border = H(halfedge_of[c] ^ 1u);
-      mesh.set_next(border, H(border_from[soup.indices[c]]));
-      mesh.set_halfedge(vertex_of_point[soup.indices[c]], border);
     }
 }
 
