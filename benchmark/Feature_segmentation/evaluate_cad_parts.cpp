@@ -4,18 +4,22 @@
 // mesh meshed from a B-rep, and NAME.labels, the B-rep face of every triangle), scored
 // by the boundary F-score at 1% of the bounding-box diagonal (compare_boundaries() of
 // evaluation.h, on the face patches) for:
-// - this package with creases at 20 degrees (crease_angle(20)), alpha 0.6;
+// - this package with creases at 20 degrees (crease_angle(20), normals filtered up to 20 times
+//   before the creases are found: the default crease_filter_iterations), alpha 0.6;
 // - the paper's pipeline (crease_angle 180, the default: crest lines only), alpha 0.6;
 // - CGAL's sharp_edges_segmentation at 20, 45 and 60 degrees;
 // each at the noise levels asked (Gaussian, along the normals, relative to the diagonal;
 // seeded). For every part it also prints the share of true boundary length whose
 // dihedral angle is below 20 degrees (tangent-continuous), which no feature-line method
-// can see.
+// can see. The ABC models of DATA/abc (NAME.obj with NAME.yml, e.g. the hex nut) follow
+// the CAD parts, outside their mean.
 //
-// Usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...]
+// Usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]
+//   N: rounds of normal filtering before the creases are found (default 20, the library's)
 //   DIR (default $FEATURE_SEGMENTATION_DATA) holds cad/; without it the program says so
 //   and exits with status 0 (nothing to evaluate).
 
+#include "evaluation/abc_ground_truth.h"
 #include "evaluation/methods.h"
 
 #include <CGAL/IO/OBJ.h>
@@ -42,6 +46,18 @@ struct Part
   Mesh mesh;
   std::vector<int> labels;
 };
+
+// An ABC model (NAME.obj with NAME.yml): its labels are the ground-truth surfaces.
+bool read_abc_part(const fsys::path& obj, Part& part)
+{
+  std::string error;
+  if(!read_mesh_in_file_order(obj.string(), part.mesh, error)) return false;
+  const Abc_ground_truth truth = read_abc_ground_truth(fsys::path(obj).replace_extension(".yml").string(),
+                                                       part.mesh.number_of_vertices(), part.mesh.number_of_faces());
+  part.labels = truth.face_patch;
+  part.name = "abc_" + obj.stem().string();
+  return std::find(part.labels.begin(), part.labels.end(), -1) == part.labels.end();
+}
 
 bool read_part(const fsys::path& obj, Part& part)
 {
@@ -73,12 +89,14 @@ double tangent_continuous_share(const Mesh& mesh, const std::vector<int>& labels
   return total > 0 ? low / total : 0.;
 }
 
+int crease_filter = 20; // --crease-filter
+
 Segmentation run_package(const Mesh& mesh, double crease_angle)
 {
   auto vp = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
   auto fp = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   const auto t0 = std::chrono::steady_clock::now();
-  FS::segment_along_features(mesh, vp, FS::parameters::crease_angle(crease_angle).face_patch_map(fp));
+  FS::segment_along_features(mesh, vp, FS::parameters::crease_angle(crease_angle).crease_filter_iterations(crease_filter).face_patch_map(fp));
   Segmentation s;
   s.seconds = seconds_since(t0);
   s.face_patch.resize(mesh.number_of_faces());
@@ -100,6 +118,7 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "--data" && i + 1 < argc) data = argv[++i];
     else if(a == "--out" && i + 1 < argc) out = argv[++i];
+    else if(a == "--crease-filter" && i + 1 < argc) crease_filter = std::atoi(argv[++i]);
     else if(a == "--noise" && i + 1 < argc)
     {
       noise.clear();
@@ -107,7 +126,7 @@ int main(int argc, char** argv)
       std::string x;
       while(std::getline(ss, x, ',')) noise.push_back(std::stod(x));
     }
-    else { std::cerr << "usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...]\n"; return 2; }
+    else { std::cerr << "usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]\n"; return 2; }
   }
   const fsys::path dir = fsys::path(data) / "cad";
   if(data.empty() || !fsys::is_directory(dir))
@@ -120,6 +139,10 @@ int main(int argc, char** argv)
   for(const auto& e : fsys::directory_iterator(dir))
     if(e.path().extension() == ".obj") objs.push_back(e.path());
   std::sort(objs.begin(), objs.end());
+  // the ABC models (DATA/abc) follow, outside the CAD mean
+  const std::vector<fsys::path> abc = ground_truth_models(fsys::path(data) / "abc");
+  const std::size_t number_of_cad_parts = objs.size();
+  objs.insert(objs.end(), abc.begin(), abc.end());
 
   std::ofstream csv(out);
   csv << "part,faces,true_patches,tangent_share,noise,method,patches,precision,recall,f,seconds\n";
@@ -130,10 +153,14 @@ int main(int argc, char** argv)
                 "creases20", "paper", "sharp20", "sharp45", "sharp60");
     double sum[5] = { 0, 0, 0, 0, 0 };
     int n = 0;
-    for(const fsys::path& obj : objs)
+    for(std::size_t i = 0; i < objs.size(); ++i)
     {
+      const fsys::path& obj = objs[i];
+      if(i == number_of_cad_parts && n > 0)
+        std::printf("%-20s %6s %5s %6s | %5.3f         %5.3f         | %6.3f %6.3f %6.3f\n", "mean (CAD parts)", "", "",
+                    "", sum[0] / n, sum[1] / n, sum[2] / n, sum[3] / n, sum[4] / n);
       Part part;
-      if(!read_part(obj, part)) { std::printf("%s: cannot read the mesh or its labels\n", obj.string().c_str()); continue; }
+      if(!(i < number_of_cad_parts ? read_part(obj, part) : read_abc_part(obj, part))) { std::printf("%s: cannot read the mesh or its labels\n", obj.string().c_str()); continue; }
       const Mesh mesh = sigma > 0 ? add_normal_noise(part.mesh, sigma, 1) : part.mesh;
       const Prepared_mesh pm(mesh);
       const int true_patches = *std::max_element(part.labels.begin(), part.labels.end()) + 1;
@@ -150,18 +177,18 @@ int main(int argc, char** argv)
         const Scores s = score(pm, runs[k].second, part.labels);
         f[k] = s.boundary.f_score;
         np[k] = s.patches;
-        sum[k] += f[k];
+        if(i < number_of_cad_parts) sum[k] += f[k];
         csv << part.name << ',' << mesh.number_of_faces() << ',' << true_patches << ',' << tangent << ','
             << sigma << ',' << runs[k].first << ',' << s.patches << ',' << s.boundary.precision << ','
             << s.boundary.recall << ',' << f[k] << ',' << runs[k].second.seconds << '\n';
       }
-      ++n;
+      if(i < number_of_cad_parts) ++n;
       std::printf("%-20.20s %6zu %5d %6.3f | %5.3f (%4zu)  %5.3f (%4zu)  | %6.3f %6.3f %6.3f\n", part.name.c_str(),
-                  mesh.number_of_faces(), true_patches, tangent, f[0], np[0], f[1], np[1], f[2], f[3], f[4]);
+                  std::size_t(mesh.number_of_faces()), true_patches, tangent, f[0], np[0], f[1], np[1], f[2], f[3], f[4]);
     }
-    if(n > 0)
-      std::printf("%-20s %6s %5s %6s | %5.3f         %5.3f         | %6.3f %6.3f %6.3f\n", "mean", "", "", "",
-                  sum[0] / n, sum[1] / n, sum[2] / n, sum[3] / n, sum[4] / n);
+    if(n > 0 && number_of_cad_parts == objs.size())
+      std::printf("%-20s %6s %5s %6s | %5.3f         %5.3f         | %6.3f %6.3f %6.3f\n", "mean (CAD parts)", "", "",
+                  "", sum[0] / n, sum[1] / n, sum[2] / n, sum[3] / n, sum[4] / n);
   }
   std::cout << "\nwritten: " << out << std::endl;
   return 0;

@@ -87,6 +87,7 @@ struct Options
   double alpha = 0.6;
   double gamma = 0.05;
   double crease_angle = 180.; // the library's default (Feature_aligned_segmentation): no creases
+  int crease_filter = 20;      // the library's default: most rounds of normal filtering before creases
   std::string solver = "gaec+klj";
   bool full_graph = false;
   std::string watershed = "anisotropic";
@@ -155,7 +156,10 @@ void print_usage(std::ostream& os)
      << "  --crease-angle D          edges whose faces bend by D degrees or more are creases:\n"
      << "                            the mesh is cut open along them and their sides tied by\n"
      << "                            crease weights; 180 or more: none, the paper's method\n"
-     << "                            (default: 180; 20 suits clean CAD tessellations)\n"
+     << "                            (default: 180; 20 suits CAD tessellations)\n"
+     << "  --crease-filter N         most rounds of bilateral filtering of the face normals\n"
+     << "                            before the creases are found; none on clean meshes;\n"
+     << "                            0: raw dihedral angles (default: 20)\n"
      << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
      << "                            edge contraction, then Kernighan-Lin with joins),\n"
      << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"
@@ -318,6 +322,13 @@ Options parse_command_line(int argc, char** argv)
       options.crease_angle = parse_double(arg, text);
       if(!(options.crease_angle > 0))
         throw Usage_error("--crease-angle must be > 0 degrees (got '" + text + "')");
+    }
+    else if(arg == "--crease-filter")
+    {
+      const std::string text = take_value();
+      options.crease_filter = parse_int(arg, text);
+      if(options.crease_filter < 0 || options.crease_filter > 1000)
+        throw Usage_error("--crease-filter must be an integer in 0 .. 1000 (got '" + text + "')");
     }
     else if(arg == "--solver")
     {
@@ -528,6 +539,7 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "    \"alpha\": " << json_number(options.alpha) << ",\n"
      << "    \"gamma\": " << json_number(options.gamma) << ",\n"
      << "    \"crease_angle\": " << json_number(options.crease_angle) << ",\n"
+     << "    \"crease_filter\": " << options.crease_filter << ",\n"
      << "    \"full_graph\": " << (options.full_graph ? "true" : "false") << ",\n"
      << "    \"watershed\": " << json_string(options.watershed) << ",\n"
      << "    \"edits_file\": "
@@ -686,6 +698,7 @@ int run(const Options& options)
   const auto common = FS::parameters::alpha(options.alpha)
                         .gamma(options.gamma)
                         .crease_angle(options.crease_angle)
+                        .crease_filter_iterations(options.crease_filter)
                         .neighborhood_rings(options.rings)
                         .strength_threshold(options.strength_threshold ? *options.strength_threshold
                                                                        : FS::default_strength_threshold)

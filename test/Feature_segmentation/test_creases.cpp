@@ -109,6 +109,25 @@ void box_is_its_six_sides(double a, double b, double c, int n)
   BOOST_TEST(creases == std::size_t(12 * n));
 }
 
+// The box of box() with noise along the normals: every vertex inside a side (not on a
+// box edge) moves along its side's normal by a deterministic pseudo-random amount,
+// uniform in [-amplitude, amplitude].
+fs_test::Soup noisy_box(double amplitude, int n, std::vector<int>& side)
+{
+  fs_test::Soup s = box(1., 1., 1., n, side);
+  unsigned long long state = 12345;
+  for(auto& p : s.points)
+  {
+    int on_faces = 0, axis = 0;
+    for(int k = 0; k < 3; ++k)
+      if(p[k] == 0. || p[k] == 1.) { ++on_faces; axis = k; }
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double u = double(state >> 11) / double(1ULL << 53); // [0, 1)
+    if(on_faces == 1) p[axis] += (p[axis] == 0. ? -1. : 1.) * amplitude * (2 * u - 1);
+  }
+  return s;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(creases)
@@ -191,6 +210,35 @@ BOOST_AUTO_TEST_CASE(crease_angle_180_is_the_papers_pipeline)
   BOOST_TEST(seg85.number_of_crease_edges() == 72u);
 }
 
+BOOST_AUTO_TEST_CASE(noisy_box_creases_come_from_filtered_normals)
+{
+  // noise of 1.5% of the side on a 12 x 12 grid (cells of 8.3%): raw neighbouring
+  // normals differ by up to about 20 degrees, so a 20 degree threshold on the raw
+  // dihedral angles finds creases inside the sides; the filtered normals keep exactly
+  // the 12 box edges, 12 mesh edges each, and the patches are the six sides
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(noisy_box(0.015, 12, side));
+  FS::Feature_aligned_segmentation<SM> raw(m, FS::parameters::crease_angle(20.).crease_filter_iterations(0));
+  BOOST_TEST(raw.number_of_crease_edges() > 12u * 12u);
+  FS::Feature_aligned_segmentation<SM> filtered(m, FS::parameters::crease_angle(20.));
+  BOOST_TEST(filtered.number_of_crease_edges() == 12u * 12u);
+  BOOST_TEST(filtered.number_of_patches() == 6u);
+  BOOST_TEST(patches_are_sides(m, filtered, side));
+}
+
+BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)
+{
+  // every face of a clean box has a neighbour with its own normal: the roughness is 0,
+  // no round of filtering runs, and the creases are those of the raw angles
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(box(1., 2., 0.1, 5, side));
+  FS::Feature_aligned_segmentation<SM> raw(m, FS::parameters::crease_angle(20.).crease_filter_iterations(0));
+  FS::Feature_aligned_segmentation<SM> filtered(m, FS::parameters::crease_angle(20.));
+  BOOST_TEST(raw.number_of_crease_edges() == 60u);
+  BOOST_TEST(filtered.number_of_crease_edges() == 60u);
+  for(auto e : edges(m)) BOOST_TEST(raw.is_crease_edge(e) == filtered.is_crease_edge(e));
+}
+
 BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)
 {
   std::vector<int> side;
@@ -198,6 +246,10 @@ BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)
   BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(0.)), FS::Invalid_input);
   BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(-5.)), FS::Invalid_input);
   BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(std::nan(""))),
+                    FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(20.).crease_filter_iterations(-1)),
+                    FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(20.).crease_filter_iterations(1001)),
                     FS::Invalid_input);
 }
 

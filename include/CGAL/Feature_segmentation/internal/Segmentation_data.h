@@ -32,10 +32,14 @@ struct Segmentation_options
 {
   double alpha = 0.6;
   double gamma = 0.05;
-  // degrees; >= 180: no creases (the paper's pipeline). Off by default: at 20 degrees a
-  // raw dihedral threshold also fires on coarse curved tessellations and on noise (see
-  // the manual, Creases).
+  // degrees; >= 180: no creases (the paper's pipeline). Off by default: at 20 degrees
+  // a dihedral threshold also fires on coarse curved tessellations (see the manual,
+  // Creases).
   double crease_angle = 180.;
+  // most rounds of bilateral filtering of the face normals before the creases are
+  // detected; the filter stops as soon as the normals are clean, so a clean mesh is not
+  // filtered (0: the raw dihedral angles)
+  int crease_filter_iterations = 20;
 
   void check() const
   {
@@ -46,6 +50,9 @@ struct Segmentation_options
     if(!(crease_angle > 0) || !std::isfinite(crease_angle))
       throw Invalid_input("crease_angle must be a finite number of degrees > 0 (180 or more: no creases; got " +
                           std::to_string(crease_angle) + ")");
+    if(crease_filter_iterations < 0 || crease_filter_iterations > 1000)
+      throw Invalid_input("crease_filter_iterations must be an integer in 0 .. 1000 (got " +
+                          std::to_string(crease_filter_iterations) + ")");
   }
 };
 

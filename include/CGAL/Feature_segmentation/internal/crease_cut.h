@@ -32,14 +32,17 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// The dihedral angle of every edge, in degrees (0 for a border edge or next to a
-// degenerate face): the angle between the normals of its two faces.
+// Unit face normals (zero for a degenerate face), face areas and centroids.
 template <typename TriangleMesh, typename VPM>
-std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, VPM vpm)
+void face_geometry(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, std::vector<Eigen::Vector3d>& normal,
+                   std::vector<double>& area, std::vector<Eigen::Vector3d>& centroid)
 {
   const TriangleMesh& tm = idx.mesh();
-  std::vector<Eigen::Vector3d> normal(idx.number_of_faces(), Eigen::Vector3d::Zero());
-  for(std::size_t f = 0; f < normal.size(); ++f)
+  const std::size_t nf = idx.number_of_faces();
+  normal.assign(nf, Eigen::Vector3d::Zero());
+  area.assign(nf, 0.);
+  centroid.assign(nf, Eigen::Vector3d::Zero());
+  for(std::size_t f = 0; f < nf; ++f)
   {
     std::array<Eigen::Vector3d, 3> p = { Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero() };
     int k = 0;
@@ -49,10 +52,124 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, VPM 
       p[k++] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
       if(k == 3) break;
     }
+    centroid[f] = (p[0] + p[1] + p[2]) / 3.;
     const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
     const double len = n.norm();
-    if(len > 0 && std::isfinite(len)) normal[f] = n / len;
+    if(len > 0 && std::isfinite(len)) { normal[f] = n / len; area[f] = 0.5 * len; }
   }
+}
+
+// The faces that share a vertex with each face (itself included), as offsets into one
+// array (CSR), in a deterministic order.
+template <typename TriangleMesh>
+void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<std::size_t>& begin,
+                           std::vector<std::size_t>& faces)
+{
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nf = idx.number_of_faces();
+  begin.assign(nf + 1, 0);
+  faces.clear();
+  std::vector<std::size_t> ring;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    ring.clear();
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+      for(auto g : CGAL::faces_around_target(h, tm))
+        if(g != boost::graph_traits<TriangleMesh>::null_face()) ring.push_back(idx.id(g));
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    faces.insert(faces.end(), ring.begin(), ring.end());
+    begin[f + 1] = faces.size();
+  }
+}
+
+// The range parameter of the bilateral filter of the normals, on |n_f - n_g| (0.3: the
+// weight of a neighbour falls to 1/e at 25 degrees). Chosen on the CAD parts with and
+// without noise (manual, Creases).
+constexpr double crease_filter_sigma_r = 0.3;
+
+// The roughness (normal_roughness) below which the normals count as clean and are not
+// filtered further.
+constexpr double crease_filter_roughness = 0.01;
+
+// The roughness of a normal field: the median over the faces of the smallest |n_f - n_g|
+// over the faces g sharing a vertex with f (about an angle in radians). On a clean
+// tessellation almost every face has a neighbour with its own normal (in a flat part,
+// along a cylinder's axis), even next to creases and on coarse cylinders: at most
+// 0.0085 on the 14 CAD parts of the evaluation; noise of 0.1% of the diagonal along the
+// normals makes it 0.035 to 0.1.
+inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std::vector<std::size_t>& begin,
+                               const std::vector<std::size_t>& ring)
+{
+  const std::size_t nf = n.size();
+  if(nf == 0) return 0.;
+  std::vector<double> r(nf, 0.);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    double least = 4.;
+    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+      if(ring[i] != f && n[ring[i]].squaredNorm() > 0) least = (std::min)(least, (n[f] - n[ring[i]]).squaredNorm());
+    r[f] = std::sqrt(least);
+  }
+  std::nth_element(r.begin(), r.begin() + nf / 2, r.end());
+  return r[nf / 2];
+}
+
+// Face normals filtered so that noise fades and creases stay sharp: bilateral normal
+// filtering (Zheng, Fu, Au, Tai, IEEE TVCG 2011) over the faces sharing a vertex, with
+// a spatial Gaussian of the mean distance between neighbouring centroids and a range
+// Gaussian of sigma_r on the difference of normals. Each round also blurs moderate
+// creases a little, so the rounds stop as soon as the field is smooth (roughness at
+// most `roughness`), after max_iterations at most: a clean tessellation is not filtered
+// at all.
+inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen::Vector3d>& normal,
+                                                        const std::vector<double>& area,
+                                                        const std::vector<Eigen::Vector3d>& centroid,
+                                                        const std::vector<std::size_t>& begin,
+                                                        const std::vector<std::size_t>& ring,
+                                                        int max_iterations, double sigma_r, double roughness)
+{
+  const std::size_t nf = normal.size();
+  double sum = 0;
+  std::size_t count = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+      if(ring[i] != f) { sum += (centroid[f] - centroid[ring[i]]).norm(); ++count; }
+  const double sigma_s = count > 0 ? sum / double(count) : 1.;
+  const double inv_s = sigma_s > 0 ? 1. / (2 * sigma_s * sigma_s) : 0.;
+  const double inv_r = 1. / (2 * sigma_r * sigma_r);
+  // the area times the spatial Gaussian of every pair, fixed over the rounds
+  std::vector<double> spatial(ring.size());
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+      spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
+  std::vector<Eigen::Vector3d> n = normal, next(nf);
+  for(int it = 0; it < max_iterations && normal_roughness(n, begin, ring) > roughness; ++it)
+  {
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      if(n[f].squaredNorm() == 0) { next[f] = n[f]; continue; }
+      Eigen::Vector3d m = Eigen::Vector3d::Zero();
+      for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+      {
+        const std::size_t g = ring[i];
+        if(n[g].squaredNorm() == 0) continue;
+        m += spatial[i] * std::exp(-(n[f] - n[g]).squaredNorm() * inv_r) * n[g];
+      }
+      const double len = m.norm();
+      next[f] = len > 0 && std::isfinite(len) ? Eigen::Vector3d(m / len) : n[f];
+    }
+    n.swap(next);
+  }
+  return n;
+}
+
+// The angle between the normals of the two faces of every edge, in degrees (0 for a
+// border edge or next to a degenerate face).
+template <typename TriangleMesh>
+std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal)
+{
+  const TriangleMesh& tm = idx.mesh();
   std::vector<double> angle(idx.number_of_edges(), 0.);
   for(std::size_t e = 0; e < angle.size(); ++e)
   {
@@ -64,6 +181,26 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, VPM 
     angle[e] = std::acos(c) * 180. / 3.14159265358979323846;
   }
   return angle;
+}
+
+// The dihedral angles the creases are detected on: those of the face normals after at
+// most `filter_iterations` rounds of bilateral filtering (none on a clean mesh; 0: the
+// raw normals), so that noise along the normals neither makes creases in flat parts
+// nor breaks real ones.
+template <typename TriangleMesh, typename VPM>
+std::vector<double> crease_detection_angles(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, int filter_iterations)
+{
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area;
+  face_geometry(idx, vpm, normal, area, centroid);
+  if(filter_iterations > 0)
+  {
+    std::vector<std::size_t> begin, ring;
+    vertex_adjacent_faces(idx, begin, ring);
+    normal = filter_face_normals(normal, area, centroid, begin, ring, filter_iterations, crease_filter_sigma_r,
+                                 crease_filter_roughness);
+  }
+  return dihedral_angles(idx, normal);
 }
 
 // One end of a crease edge: the two copies of the end vertex on the two sides. Cutting
@@ -102,13 +239,13 @@ struct Crease_cut
   bool is_cut() const { return mesh != nullptr; }
 };
 
-// Marks the creases of the mesh of `idx` (dihedral angle >= crease_angle degrees; none
-// if crease_angle >= 180) and, if there are any, builds the cut copy, its maps and the
+// Marks the creases of the mesh of `idx` (dihedral angle >= crease_angle degrees on the
+// normals filtered filter_iterations times; none if crease_angle >= 180) and, if there are any, builds the cut copy, its maps and the
 // ties. Working-mesh indices are those of a Mesh_indexing of the copy (any indexing of
 // it numbers its elements in the same iteration order).
 template <typename TriangleMesh, typename VPM>
-void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, double gamma,
-                        Crease_cut<TriangleMesh>& cut)
+void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, int filter_iterations,
+                        double gamma, Crease_cut<TriangleMesh>& cut)
 {
   typedef boost::graph_traits<TriangleMesh> GTr;
   typedef typename GTr::vertex_descriptor vertex_descriptor;
@@ -120,7 +257,7 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   cut = Crease_cut<TriangleMesh>();
   cut.is_crease.assign(ne, 0);
   if(crease_angle >= 180) return;
-  const std::vector<double> angle = dihedral_angles(idx, vpm);
+  const std::vector<double> angle = crease_detection_angles(idx, vpm, filter_iterations);
   for(std::size_t e = 0; e < ne; ++e)
     if(angle[e] >= crease_angle) { cut.is_crease[e] = 1; ++cut.number_of_creases; }
   if(cut.number_of_creases == 0) return;

@@ -27,6 +27,8 @@ Segmentation_options read_segmentation_options(const NamedParameters& np)
   opt.alpha = choose_parameter(get_parameter(np, internal_np::alpha), opt.alpha);
   opt.gamma = choose_parameter(get_parameter(np, internal_np::gamma), opt.gamma);
   opt.crease_angle = choose_parameter(get_parameter(np, internal_np::crease_angle), opt.crease_angle);
+  opt.crease_filter_iterations =
+    choose_parameter(get_parameter(np, internal_np::crease_filter_iterations), opt.crease_filter_iterations);
   opt.check();
   return opt;
 }
