@@ -89,7 +89,8 @@ double tangent_continuous_share(const Mesh& mesh, const std::vector<int>& labels
   return total > 0 ? low / total : 0.;
 }
 
-int crease_filter = 20; // --crease-filter
+// --crease-filter; the library's default otherwise
+int crease_filter = FS::internal::Segmentation_options().crease_filter_iterations;
 
 Segmentation run_package(const Mesh& mesh, double crease_angle)
 {
@@ -118,7 +119,17 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "--data" && i + 1 < argc) data = argv[++i];
     else if(a == "--out" && i + 1 < argc) out = argv[++i];
-    else if(a == "--crease-filter" && i + 1 < argc) crease_filter = std::atoi(argv[++i]);
+    else if(a == "--crease-filter" && i + 1 < argc)
+    {
+      char* end = nullptr;
+      const long n = std::strtol(argv[++i], &end, 10);
+      if(end == argv[i] || *end != '\0' || n < 0 || n > 1000)
+      {
+        std::cerr << "evaluate_cad_parts: --crease-filter takes an integer in 0 .. 1000 (got '" << argv[i] << "')\n";
+        return 2;
+      }
+      crease_filter = int(n);
+    }
     else if(a == "--noise" && i + 1 < argc)
     {
       noise.clear();

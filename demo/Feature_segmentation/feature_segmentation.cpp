@@ -87,7 +87,8 @@ struct Options
   double alpha = 0.6;
   double gamma = 0.05;
   double crease_angle = 180.; // the library's default (Feature_aligned_segmentation): no creases
-  int crease_filter = 20;      // the library's default: most rounds of normal filtering before creases
+  // most rounds of normal filtering before creases: the library's default
+  int crease_filter = CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations;
   std::string solver = "gaec+klj";
   bool full_graph = false;
   std::string watershed = "anisotropic";
@@ -159,7 +160,8 @@ void print_usage(std::ostream& os)
      << "                            (default: 180; 20 suits CAD tessellations)\n"
      << "  --crease-filter N         most rounds of bilateral filtering of the face normals\n"
      << "                            before the creases are found; none on clean meshes;\n"
-     << "                            0: raw dihedral angles (default: 20)\n"
+     << "                            0: raw dihedral angles (default: "
+     << CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations << ")\n"
      << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
      << "                            edge contraction, then Kernighan-Lin with joins),\n"
      << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"

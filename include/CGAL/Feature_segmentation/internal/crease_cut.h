@@ -120,15 +120,17 @@ inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std:
 // a spatial Gaussian of the mean distance between neighbouring centroids and a range
 // Gaussian of sigma_r on the difference of normals. Each round also blurs moderate
 // creases a little, so the rounds stop as soon as the field is smooth (roughness at
-// most `roughness`), after max_iterations at most: a clean tessellation is not filtered
-// at all.
+// most `roughness`), after max_iterations at most: a clean tessellation (whose
+// `normal_roughness`, passed as `initial_roughness`, is below it) is returned as is.
 inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen::Vector3d>& normal,
+                                                        double initial_roughness,
                                                         const std::vector<double>& area,
                                                         const std::vector<Eigen::Vector3d>& centroid,
                                                         const std::vector<std::size_t>& begin,
                                                         const std::vector<std::size_t>& ring,
                                                         int max_iterations, double sigma_r, double roughness)
 {
+  if(max_iterations <= 0 || initial_roughness <= roughness) return normal;
   const std::size_t nf = normal.size();
   double sum = 0;
   std::size_t count = 0;
@@ -144,7 +146,8 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
     for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
       spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
   std::vector<Eigen::Vector3d> n = normal, next(nf);
-  for(int it = 0; it < max_iterations && normal_roughness(n, begin, ring) > roughness; ++it)
+  double current = initial_roughness;
+  for(int it = 0; it < max_iterations && current > roughness; ++it)
   {
     for(std::size_t f = 0; f < nf; ++f)
     {
@@ -160,6 +163,7 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
       next[f] = len > 0 && std::isfinite(len) ? Eigen::Vector3d(m / len) : n[f];
     }
     n.swap(next);
+    current = normal_roughness(n, begin, ring);
   }
   return n;
 }
@@ -242,8 +246,9 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
     }
   }
   // a search over the faces from the candidate's two faces, within the ball
+  // (the lengths are read from `angle`, not from is_crease, so dropping a candidate
+  // does not change the test of the others)
   std::vector<std::size_t> face_stamp(nf, std::size_t(-1)), edge_stamp(ne, std::size_t(-1)), queue;
-  std::vector<char> keep(ne, 0);
   for(std::size_t e = 0; e < ne; ++e)
   {
     if(!is_crease[e]) continue;
@@ -269,10 +274,8 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
         queue.push_back(y);
       }
     }
-    keep[e] = band_length <= crease_gap_ratio * crease_length;
+    if(band_length > crease_gap_ratio * crease_length) is_crease[e] = 0;
   }
-  for(std::size_t e = 0; e < ne; ++e)
-    if(is_crease[e] && !keep[e]) is_crease[e] = 0;
 }
 
 // The creases of the mesh of `idx` (per edge): the edges whose dihedral angle is at
@@ -291,9 +294,10 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   vertex_adjacent_faces(idx, begin, ring);
   const std::vector<double> raw = dihedral_angles(idx, normal);
   const double raw_roughness = normal_roughness(normal, begin, ring);
-  angle = filter_iterations > 0
-            ? dihedral_angles(idx, filter_face_normals(normal, area, centroid, begin, ring, filter_iterations,
-                                                       crease_filter_sigma_r, crease_filter_roughness))
+  angle = raw_roughness > crease_filter_roughness && filter_iterations > 0
+            ? dihedral_angles(idx, filter_face_normals(normal, raw_roughness, area, centroid, begin, ring,
+                                                       filter_iterations, crease_filter_sigma_r,
+                                                       crease_filter_roughness))
             : raw;
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
@@ -337,10 +341,10 @@ struct Crease_cut
   bool is_cut() const { return mesh != nullptr; }
 };
 
-// Marks the creases of the mesh of `idx` (dihedral angle >= crease_angle degrees on the
-// normals filtered filter_iterations times; none if crease_angle >= 180) and, if there are any, builds the cut copy, its maps and the
-// ties. Working-mesh indices are those of a Mesh_indexing of the copy (any indexing of
-// it numbers its elements in the same iteration order).
+// Marks the creases of the mesh of `idx` (detect_creases; none if crease_angle >= 180)
+// and, if there are any, builds the cut copy, its maps and the ties. Working-mesh
+// indices are those of a Mesh_indexing of the copy (any indexing of it numbers its
+// elements in the same iteration order).
 template <typename TriangleMesh, typename VPM>
 void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, int filter_iterations,
                         double gamma, Crease_cut<TriangleMesh>& cut)
