@@ -86,7 +86,7 @@ struct Options
   // The library's defaults for alpha and gamma (segment_along_features()).
   double alpha = 0.6;
   double gamma = 0.05;
-  double crease_angle = 180.; // the library's default (Feature_aligned_segmentation): no creases
+  double crease_angle = CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle;
   // most rounds of normal filtering before creases: the library's default
   int crease_filter = CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations;
   std::string solver = "gaec+klj";
@@ -156,8 +156,10 @@ void print_usage(std::ostream& os)
      << "  --gamma X                 anisotropy of the metric, X >= 0 (default: 0.05)\n"
      << "  --crease-angle D          edges whose faces bend by D degrees or more are creases:\n"
      << "                            the mesh is cut open along them and their sides tied by\n"
-     << "                            crease weights; 180 or more: none, the paper's method\n"
-     << "                            (default: 180; 20 suits CAD tessellations)\n"
+     << "                            crease weights (a gap test keeps strong bends of smooth\n"
+     << "                            surfaces out); 180 or more: none, the paper's method\n"
+     << "                            (default: "
+     << CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle << ")\n"
      << "  --crease-filter N         most rounds of bilateral filtering of the face normals\n"
      << "                            before the creases are found; none on clean meshes;\n"
      << "                            0: raw dihedral angles (default: "

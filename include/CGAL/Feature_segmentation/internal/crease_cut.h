@@ -197,7 +197,7 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, cons
 // ones around them.
 constexpr double crease_gap_band = 0.75;
 constexpr double crease_gap_ratio = 0.5;
-constexpr double crease_gap_radius = 0.02;
+constexpr double crease_gap_radius = 0.05;
 // The raw roughness (normal_roughness) up to which the band is read on the raw angles:
 // clean CAD parts measure at most 0.0085 and the paper's smooth models 0.012 to 0.028,
 // whose filtered normals turn smooth bends into staircases with gaps; noisy meshes
