@@ -160,7 +160,7 @@ void print_usage(std::ostream& os)
      << "                            surfaces out); 180 or more: none, the paper's method\n"
      << "                            (default: "
      << CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle << ")\n"
-     << "  --crease-filter N         most rounds of bilateral filtering of the face normals\n"
+     << "  --crease-filter N         rounds of bilateral filtering of the face normals\n"
      << "                            before the creases are found; none on clean meshes;\n"
      << "                            0: raw dihedral angles (default: "
      << CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations << ")\n"

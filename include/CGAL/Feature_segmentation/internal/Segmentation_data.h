@@ -37,10 +37,10 @@ struct Segmentation_options
   // apart from the creases, and the gap test keeps the strong bends of smooth surfaces
   // out (see the manual, Creases).
   double crease_angle = 20.;
-  // most rounds of bilateral filtering of the face normals before the creases are
-  // detected; the filter stops as soon as the normals are clean, so a clean mesh is not
-  // filtered (0: the raw dihedral angles)
-  int crease_filter_iterations = 20;
+  // rounds of bilateral filtering of the face normals before the creases are detected;
+  // a clean mesh (normal roughness at most 0.01) is not filtered at all (0: the raw
+  // dihedral angles everywhere)
+  int crease_filter_iterations = 40;
 
   void check() const
   {

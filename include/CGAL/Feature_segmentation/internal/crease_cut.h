@@ -28,6 +28,7 @@
 #include <numeric>
 #include <vector>
 
+
 namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
@@ -88,8 +89,8 @@ void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<s
 // without noise (manual, Creases).
 constexpr double crease_filter_sigma_r = 0.3;
 
-// The roughness (normal_roughness) below which the normals count as clean and are not
-// filtered further.
+// The roughness (normal_roughness) up to which the normals count as clean and are not
+// filtered at all.
 constexpr double crease_filter_roughness = 0.01;
 
 // The roughness of a normal field: the median over the faces of the smallest |n_f - n_g|
@@ -118,10 +119,11 @@ inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std:
 // Face normals filtered so that noise fades and creases stay sharp: bilateral normal
 // filtering (Zheng, Fu, Au, Tai, IEEE TVCG 2011) over the faces sharing a vertex, with
 // a spatial Gaussian of the mean distance between neighbouring centroids and a range
-// Gaussian of sigma_r on the difference of normals. Each round also blurs moderate
-// creases a little, so the rounds stop as soon as the field is smooth (roughness at
-// most `roughness`), after max_iterations at most: a clean tessellation (whose
-// `normal_roughness`, passed as `initial_roughness`, is below it) is returned as is.
+// Gaussian of sigma_r on the difference of normals, max_iterations rounds. A clean
+// tessellation (whose `normal_roughness`, passed as `initial_roughness`, is at most
+// `roughness`) is returned as is. Once filtering, every round runs: stopping as soon as
+// the median roughness is low leaves the outliers of strong noise (faces tilted far
+// from all their neighbours, which the range Gaussian protects) as spurious creases.
 inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen::Vector3d>& normal,
                                                         double initial_roughness,
                                                         const std::vector<double>& area,
@@ -146,8 +148,7 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
     for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
       spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
   std::vector<Eigen::Vector3d> n = normal, next(nf);
-  double current = initial_roughness;
-  for(int it = 0; it < max_iterations && current > roughness; ++it)
+  for(int it = 0; it < max_iterations; ++it)
   {
     for(std::size_t f = 0; f < nf; ++f)
     {
@@ -163,7 +164,6 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
       next[f] = len > 0 && std::isfinite(len) ? Eigen::Vector3d(m / len) : n[f];
     }
     n.swap(next);
-    current = normal_roughness(n, begin, ring);
   }
   return n;
 }
@@ -248,7 +248,9 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
   // a search over the faces from the candidate's two faces, within the ball
   // (the lengths are read from `angle`, not from is_crease, so dropping a candidate
   // does not change the test of the others)
-  std::vector<std::size_t> face_stamp(nf, std::size_t(-1)), edge_stamp(ne, std::size_t(-1)), queue;
+  std::vector<std::size_t> face_stamp(nf, std::size_t(-1)), edge_stamp(ne, std::size_t(-1));
+  std::vector<std::size_t> queue;
+  queue.reserve(256);
   for(std::size_t e = 0; e < ne; ++e)
   {
     if(!is_crease[e]) continue;
