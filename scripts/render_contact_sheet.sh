@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# A contact sheet of the program's segmentations: runs feature_segmentation on every
+# MESH (with the options in FS_OPTIONS, default none: the package's defaults), renders
+# each segmentation.ply from two sides with the evaluation's renderer (Mesa's
+# off-screen OpenGL) and lays the pictures out in one PNG, each labelled with the
+# mesh's name and its patch count.
+# Usage: scripts/render_contact_sheet.sh OUT.png MESH...
+# Environment: FS_BUILD_DIR (default: <source>/build), FS_OPTIONS (program options),
+# FS_TILE_SIZE (pixels per view, default 220), FS_COLUMNS (default 4).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if [ $# -lt 2 ]; then
+  echo "usage: $0 OUT.png MESH..." >&2
+  exit 2
+fi
+out="$1"; shift
+build="${FS_BUILD_DIR:-$here/build}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+tile="${FS_TILE_SIZE:-220}"
+
+"$here/scripts/install_dependencies.sh"
+extras=(libosmesa6-dev libpng-dev pkg-config imagemagick fonts-dejavu-core)
+missing=()
+for p in "${extras[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "render_contact_sheet: installing ${missing[*]}"
+  SUDO=""; if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --target feature_segmentation -j "$jobs" >/dev/null
+cmake -S "$here/benchmark/Feature_segmentation/evaluation" -B "$build/evaluation-render" >/dev/null
+cmake --build "$build/evaluation-render" -j "$jobs" >/dev/null
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+args=()
+for mesh in "$@"; do
+  name="$(basename "${mesh%.*}")"
+  # shellcheck disable=SC2086 # FS_OPTIONS is a list of options
+  if ! "$build/demo/Feature_segmentation/feature_segmentation" "$mesh" --output-dir "$work/$name" --quiet ${FS_OPTIONS:-} 2> "$work/$name.err"; then
+    echo "render_contact_sheet: $mesh: $(tail -n 1 "$work/$name.err")" >&2
+    exit 1
+  fi
+  patches="$(sed -n 's/^    "patches": \([0-9]*\),\{0,1\}$/\1/p' "$work/$name/summary.json" | head -n 1)"
+  python3 "$here/benchmark/Feature_segmentation/evaluation/ply_to_scene.py" \
+    "$work/$name/segmentation.ply" "$work/$name.scene" "$name ($patches patches)"
+  while IFS=$'\t' read -r png label; do
+    args+=(-label "$label" "$png")
+  done < <("$build/evaluation-render/render_scenes" "$work/$name.scene" "$work/$name" "$tile")
+done
+montage -font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf -pointsize 13 "${args[@]}" \
+        -tile "${FS_COLUMNS:-4}x" -geometry +4+4 "$out"
+echo "render_contact_sheet: $out"
