@@ -329,7 +329,7 @@ public:
       r.points = sketch.size();
     }
     const auto prepared = Clock::now();
-    const std::size_t undoable = m_segmentation.number_of_undoable_edits();
+    const std::size_t recorded = m_segmentation.number_of_recorded_edits();
     try
     {
       if(e.verb == "alpha")
@@ -354,12 +354,15 @@ public:
       CGAL_assertion(!m_done.empty());
       const Done last = m_done.back();
       m_done.pop_back();
-      if(last.recorded)
-        m_segmentation.undo();
+      if(last.recorded && !m_segmentation.undo())
+        throw Edit_script_error(internal::script_place(script.path, e.line) +
+                                "undo: cannot take back line " + std::to_string(last.line) +
+                                ": the segmentation keeps the last " +
+                                std::to_string(Segmentation::maximum_undo_depth) + " edits only");
       r.undone_line = last.line;
     }
     else
-      m_done.push_back({e.line, m_segmentation.number_of_undoable_edits() > undoable});
+      m_done.push_back({e.line, m_segmentation.number_of_recorded_edits() > recorded});
     const auto end = Clock::now();
     r.prepare_seconds = std::chrono::duration<double>(prepared - start).count();
     r.seconds = std::chrono::duration<double>(end - prepared).count();

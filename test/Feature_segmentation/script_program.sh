@@ -554,6 +554,10 @@ printf 'refine ball 0 0 zero 0.3 0.5\n' > "$bad/number.edits"
 printf 'alpha 0.8\nalpha inf\n' > "$bad/infinite.edits"
 printf 'scale ball 0 0 0 0.1 nan\n' > "$bad/nan.edits"
 printf 'merge ball 0 0 0 0\n' > "$bad/radius.edits"
+# 65 alpha edits then 65 undos: the library keeps the last 64 edits, so the last undo
+# (line 130) cannot take back line 1; 64 and 64 undo every edit.
+{ for i in $(seq 1 65); do echo "alpha 0.$((6 + i % 2))"; done; for i in $(seq 1 65); do echo undo; done; } > "$bad/undo65.edits"
+{ for i in $(seq 1 64); do echo "alpha 0.$((6 + i % 2))"; done; for i in $(seq 1 64); do echo undo; done; } > "$work/undo64.edits"
 printf 'merge ball 0 0 0 -1\n' > "$bad/radius_negative.edits"
 printf 'merge faces 0 12946\n' > "$bad/face_range.edits"
 printf 'merge faces 0 -1\n' > "$bad/face_negative.edits"
@@ -621,6 +625,13 @@ expect_error edits_ball_arity       1 "ball_arity\.edits:1: refine: a ball is 'b
 expect_error edits_number           1 "number\.edits:1: ball: 'zero' is not a number" "$fandisk" --edits "$bad/number.edits"
 expect_error edits_infinite         1 "infinite\.edits:2: alpha: 'inf' is not a finite number" "$fandisk" --edits "$bad/infinite.edits"
 expect_error edits_nan              1 "nan\.edits:1: scale: 'nan' is not a finite number" "$fandisk" --edits "$bad/nan.edits"
+expect_error edits_undo_history     1 'undo65\.edits:130: undo: cannot take back line 1: the segmentation keeps the last 64 edits only' "$fandisk" --edits "$bad/undo65.edits"
+run undo64 "$fandisk" --output-dir "$work/undo64" --edits "$work/undo64.edits" --quiet
+check "64 edits and 64 undos: exit status 0 (stderr: $(tail -n 1 "$work/undo64.err"))" [ "$rc" -eq 0 ]
+check "64 edits and 64 undos: the automatic patches ($(json_int "$work/undo64/summary.json" segmentation automatic_patches)) are back" \
+  [ "$(json_int "$work/undo64/summary.json" segmentation patches)" = "$(json_int "$work/undo64/summary.json" segmentation automatic_patches)" ]
+check "64 edits and 64 undos: the automatic segmentation's face patches are back" \
+  cmp -s "$work/undo64/face_patches.txt" "$out/face_patches.txt"
 expect_error edits_radius           1 'radius\.edits:1: ball: the radius must be > 0' "$fandisk" --edits "$bad/radius.edits"
 expect_error edits_radius_negative  1 'radius_negative\.edits:1: ball: the radius must be > 0' "$fandisk" --edits "$bad/radius_negative.edits"
 expect_error edits_face_range       1 'face_range\.edits:1: faces: face index 12946 is out of range \(the mesh file has 12946 faces\)' "$fandisk" --edits "$bad/face_range.edits"

@@ -122,8 +122,13 @@ BOOST_AUTO_TEST_CASE(global_refine_and_multiply)
   BOOST_TEST(seg.number_of_patches() == 8u);
   BOOST_CHECK_THROW(seg.set_alpha(std::nan("")), FS::Invalid_input);
   // the undo history is bounded
+  const std::size_t recorded_before = seg.number_of_recorded_edits();
   for(std::size_t i = 0; i < Segmentation::maximum_undo_depth + 10; ++i) seg.set_alpha(0.6 + 0.001 * double(i % 2));
   BOOST_TEST(seg.number_of_undoable_edits() == Segmentation::maximum_undo_depth);
+  // every one was recorded, the oldest dropped: after the kept ones, undo() refuses
+  BOOST_TEST(seg.number_of_recorded_edits() == recorded_before + Segmentation::maximum_undo_depth + 10);
+  for(std::size_t i = 0; i < Segmentation::maximum_undo_depth; ++i) BOOST_TEST(seg.undo());
+  BOOST_TEST(!seg.undo());
   BOOST_CHECK_THROW(seg.multiply_alpha(all, -1.), FS::Invalid_input);
 }
 

@@ -221,6 +221,11 @@ public:
   std::size_t number_of_oversegments() const { return m_heavy->os.number_of_segments; }
   /// The number of edits that `undo()` can take back.
   std::size_t number_of_undoable_edits() const { return m_undo.size(); }
+  /// The number of edits recorded for `undo()` since construction, including those
+  /// dropped beyond `maximum_undo_depth` and those already undone: an edit that changed
+  /// nothing (an empty region, a merge inside one patch) records none, so comparing this
+  /// number before and after an edit tells whether `undo()` would take it back.
+  std::size_t number_of_recorded_edits() const { return m_recorded; }
   /// @}
 
   /// \name Edits
@@ -458,6 +463,7 @@ private:
                                         m_data.terms.award, m_data.number_of_feature_edges});
     }
     m_undo.push_back(std::move(r));
+    ++m_recorded;
     if(m_undo.size() > maximum_undo_depth)
       m_undo.erase(m_undo.begin());
   }
@@ -756,6 +762,7 @@ private:
   State m_state;
   std::shared_ptr<Heavy> m_heavy;
   std::vector<Undo_record> m_undo;
+  std::size_t m_recorded = 0;
 };
 
 } // namespace Feature_segmentation
