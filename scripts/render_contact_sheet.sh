@@ -38,19 +38,30 @@ cmake --build "$build/evaluation-render" -j "$jobs" >/dev/null
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 args=()
+i=0
 for mesh in "$@"; do
-  name="$(basename "${mesh%.*}")"
+  i=$((i + 1))
+  name="$(basename "$mesh")"; name="${name%.*}"
+  dir="$work/$i"  # numbered: two meshes of the same name do not collide
   # shellcheck disable=SC2086 # FS_OPTIONS is a list of options
-  if ! "$build/demo/Feature_segmentation/feature_segmentation" "$mesh" --output-dir "$work/$name" --quiet ${FS_OPTIONS:-} 2> "$work/$name.err"; then
-    echo "render_contact_sheet: $mesh: $(tail -n 1 "$work/$name.err")" >&2
+  if ! "$build/demo/Feature_segmentation/feature_segmentation" "$mesh" --output-dir "$dir" --quiet ${FS_OPTIONS:-} 2> "$dir.err"; then
+    echo "render_contact_sheet: $mesh: $(tail -n 1 "$dir.err")" >&2
     exit 1
   fi
-  patches="$(sed -n 's/^    "patches": \([0-9]*\),\{0,1\}$/\1/p' "$work/$name/summary.json" | head -n 1)"
+  patches="$(sed -n 's/^    "patches": \([0-9]*\),\{0,1\}$/\1/p' "$dir/summary.json" | head -n 1)"
+  if [ -z "$patches" ]; then
+    echo "render_contact_sheet: $mesh: no patch count in $dir/summary.json" >&2
+    exit 1
+  fi
   python3 "$here/benchmark/Feature_segmentation/evaluation/ply_to_scene.py" \
-    "$work/$name/segmentation.ply" "$work/$name.scene" "$name ($patches patches)"
+    "$dir/segmentation.ply" "$dir.scene" "$name ($patches patches)"
+  if ! "$build/evaluation-render/render_scenes" "$dir.scene" "$dir" "$tile" > "$dir.tiles"; then
+    echo "render_contact_sheet: $mesh: the renderer failed" >&2
+    exit 1
+  fi
   while IFS=$'\t' read -r png label; do
     args+=(-label "$label" "$png")
-  done < <("$build/evaluation-render/render_scenes" "$work/$name.scene" "$work/$name" "$tile")
+  done < "$dir.tiles"
 done
 montage -font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf -pointsize 13 "${args[@]}" \
         -tile "${FS_COLUMNS:-4}x" -geometry +4+4 "$out"

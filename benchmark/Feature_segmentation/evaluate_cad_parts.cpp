@@ -4,9 +4,9 @@
 // mesh meshed from a B-rep, and NAME.labels, the B-rep face of every triangle), scored
 // by the boundary F-score at 1% of the bounding-box diagonal (compare_boundaries() of
 // evaluation.h, on the face patches) for:
-// - this package with creases at 20 degrees (crease_angle(20), normals filtered up to 20 times
-//   before the creases are found: the default crease_filter_iterations), alpha 0.6;
-// - the paper's pipeline (crease_angle 180, the default: crest lines only), alpha 0.6;
+// - this package at its defaults: creases at 20 degrees, normals filtered before the
+//   creases are found (crease_filter_iterations, 40; none on a clean mesh), alpha 0.6;
+// - the paper's pipeline (crease_angle 180: crest lines only), alpha 0.6;
 // - CGAL's sharp_edges_segmentation at 20, 45 and 60 degrees;
 // each at the noise levels asked (Gaussian, along the normals, relative to the diagonal;
 // seeded). For every part it also prints the share of true boundary length whose
@@ -15,7 +15,7 @@
 // the CAD parts, outside their mean.
 //
 // Usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]
-//   N: rounds of normal filtering before the creases are found (default 20, the library's)
+//   N: rounds of normal filtering before the creases are found (default: the library's, 40)
 //   DIR (default $FEATURE_SEGMENTATION_DATA) holds cad/; without it the program says so
 //   and exits with status 0 (nothing to evaluate).
 

@@ -1,5 +1,5 @@
 // Creases (CAD tessellations): the segmentation cut open along edges whose faces bend by
-// crease_angle or more (here 20 degrees; the default, 180, is none). Boxes give exact answers: their six faces, whatever the
+// crease_angle or more (20 degrees, the default; 180 is none). Boxes give exact answers: their six faces, whatever the
 // resolution and however thin the box, with every triangle on its own side.
 #include <boost/test/unit_test.hpp>
 

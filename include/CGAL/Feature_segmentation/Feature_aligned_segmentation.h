@@ -568,7 +568,12 @@ private:
   void transaction(Edit edit)
   {
     try { edit(); }
-    catch(...) { undo(); throw; }
+    catch(...)
+    {
+      undo();
+      --m_recorded; // the edit did not happen
+      throw;
+    }
   }
 
   void check_face(face_descriptor f) const

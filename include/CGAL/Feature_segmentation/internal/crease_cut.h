@@ -146,7 +146,7 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
     for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
       spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
   // the range Gaussian as a table over |n_f - n_g|^2 in [0, 4], read with linear
-  // interpolation (relative error below 1e-6; the exponential was most of the time)
+  // interpolation (relative error below 4e-6; the exponential was most of the time)
   constexpr std::size_t table_size = 4096;
   std::vector<double> range(table_size + 2);
   for(std::size_t k = 0; k < range.size(); ++k) range[k] = std::exp(-4. * double(k) / double(table_size) * inv_r);
@@ -163,7 +163,7 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
       {
         const std::size_t g = ring[i];
         if(n[g].squaredNorm() == 0) continue;
-        const double x = (std::min)((n[f] - n[g]).squaredNorm(), 4.) * to_table;
+        const double x = (std::min)(4., (n[f] - n[g]).squaredNorm()) * to_table;
         const std::size_t k = static_cast<std::size_t>(x);
         const double t = x - double(k);
         m += spatial[i] * ((1 - t) * range[k] + t * range[k + 1]) * n[g];
