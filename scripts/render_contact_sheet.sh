@@ -19,21 +19,9 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 tile="${FS_TILE_SIZE:-220}"
 
 "$here/scripts/install_dependencies.sh"
-extras=(libosmesa6-dev libpng-dev pkg-config imagemagick fonts-dejavu-core)
-missing=()
-for p in "${extras[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "render_contact_sheet: installing ${missing[*]}"
-  SUDO=""; if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --target feature_segmentation -j "$jobs" >/dev/null
-cmake -S "$here/benchmark/Feature_segmentation/evaluation" -B "$build/evaluation-render" >/dev/null
-cmake --build "$build/evaluation-render" -j "$jobs" >/dev/null
+"$here/scripts/build_renderer.sh" "$build"
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

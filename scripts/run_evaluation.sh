@@ -19,23 +19,10 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 tile="${FS_TILE_SIZE:-300}"
 
 "$here/scripts/install_dependencies.sh"
-# The renderer's extras (Mesa's off-screen OpenGL, libpng, ImageMagick's montage, a font).
-extras=(libosmesa6-dev libpng-dev pkg-config imagemagick fonts-dejavu-core)
-missing=()
-for p in "${extras[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "run_evaluation: installing ${missing[*]}"
-  SUDO=""; if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --target evaluate_quality -j "$jobs"
-cmake -S "$here/benchmark/Feature_segmentation/evaluation" -B "$build/evaluation-render" >/dev/null
-cmake --build "$build/evaluation-render" -j "$jobs"
+"$here/scripts/build_renderer.sh" "$build"
 
 data="${FEATURE_SEGMENTATION_DATA:-}"
 if [ -z "$data" ] && [ -d "$here/../shared/data" ]; then data="$(cd "$here/../shared/data" && pwd)"; fi
