@@ -28,7 +28,6 @@
 #include <numeric>
 #include <vector>
 
-
 namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
