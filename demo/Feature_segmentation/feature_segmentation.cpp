@@ -79,6 +79,7 @@ struct Options
   std::string input = std::string(FS_MESH_DIR) + "/fandisk.off";
   std::string output_dir = "feature_segmentation_output";
   int rings = 2;
+  double radius = FS::default_neighborhood_radius;
   std::optional<double> strength_threshold; // unset: the library's default
   bool ridges = true;
   bool valleys = true;
@@ -145,6 +146,10 @@ void print_usage(std::ostream& os)
      << "  --output-dir DIR          output folder, created if needed\n"
      << "                            (default: ./feature_segmentation_output)\n"
      << "  --rings N                 curvature neighbourhood in rings, integer >= 1 (default: 2)\n"
+     << "  --radius X                and beyond the rings, the vertices within X times the\n"
+     << "                            bounding box diagonal (normals within 30 degrees);\n"
+     << "                            0 <= X <= 1, 0: rings only (default: "
+     << FS::default_neighborhood_radius << ")\n"
      << "  --strength-threshold X    drop feature lines weaker than X, X >= 0\n"
      << "                            (default: " << FS::default_strength_threshold << ")\n"
      << "  --no-ridges               do not detect ridges\n"
@@ -296,6 +301,13 @@ Options parse_command_line(int argc, char** argv)
       if(options.rings < 1)
         throw Usage_error("--rings must be an integer >= 1 (got " +
                           std::to_string(options.rings) + ")");
+    }
+    else if(arg == "--radius")
+    {
+      const std::string text = take_value();
+      options.radius = parse_double(arg, text);
+      if(!(options.radius >= 0) || !(options.radius <= 1))
+        throw Usage_error("--radius must be a number in [0, 1] (got " + text + ")");
     }
     else if(arg == "--strength-threshold")
     {
@@ -534,6 +546,7 @@ void write_summary(std::ostream& os, const Options& options, const Results& r,
      << "  \"input\": " << json_string(options.input) << ",\n"
      << "  \"options\": {\n"
      << "    \"rings\": " << options.rings << ",\n"
+     << "    \"radius\": " << json_number(options.radius) << ",\n"
      << "    \"strength_threshold\": " << json_number(threshold) << ",\n"
      << "    \"ridges\": " << (options.ridges ? "true" : "false") << ",\n"
      << "    \"valleys\": " << (options.valleys ? "true" : "false") << ",\n"
@@ -704,6 +717,7 @@ int run(const Options& options)
                         .crease_angle(options.crease_angle)
                         .crease_filter_iterations(options.crease_filter)
                         .neighborhood_rings(options.rings)
+                        .neighborhood_radius(options.radius)
                         .strength_threshold(options.strength_threshold ? *options.strength_threshold
                                                                        : FS::default_strength_threshold)
                         .detect_ridges(options.ridges)
@@ -717,7 +731,7 @@ int run(const Options& options)
     auto curvature_map =
       mesh.add_property_map<Mesh::Vertex_index, FS::Principal_curvatures<K> >("v:fs_principal_curvatures").first;
     timer.run("curvature", [&]() {
-      FS::estimate_principal_curvatures(mesh, curvature_map, FS::parameters::neighborhood_rings(options.rings));
+      FS::estimate_principal_curvatures(mesh, curvature_map, FS::parameters::neighborhood_rings(options.rings).neighborhood_radius(options.radius));
     });
     FS::Feature_lines<Mesh> lines = timer.run("feature_lines", [&]() {
       FS::Feature_lines<Mesh> detected;

@@ -27,44 +27,6 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Surface_mesh<Epick::Point_3> SM;
 typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
 
-// The box [0,a]x[0,b]x[0,c], each side an n x n grid of quads split in two triangles,
-// oriented outwards. `side` receives the side (0..5) of every triangle, in face order.
-fs_test::Soup box(double a, double b, double c, int n, std::vector<int>& side)
-{
-  fs_test::Soup s;
-  std::map<std::array<int, 3>, std::size_t> id;
-  const double size[3] = { a, b, c };
-  auto point = [&](std::array<int, 3> q) {
-    auto it = id.find(q);
-    if(it != id.end()) return it->second;
-    s.points.push_back({ size[0] * q[0] / n, size[1] * q[1] / n, size[2] * q[2] / n });
-    return id[q] = s.points.size() - 1;
-  };
-  side.clear();
-  for(int d = 0; d < 3; ++d)
-    for(int far = 0; far < 2; ++far)
-    {
-      const int d1 = (d + 1) % 3, d2 = (d + 2) % 3;
-      for(int i = 0; i < n; ++i)
-        for(int j = 0; j < n; ++j)
-        {
-          std::array<int, 3> p{}, q{}, r{}, t{};
-          p[d] = q[d] = r[d] = t[d] = far * n;
-          p[d1] = i;     p[d2] = j;
-          q[d1] = i + 1; q[d2] = j;
-          r[d1] = i + 1; r[d2] = j + 1;
-          t[d1] = i;     t[d2] = j + 1;
-          std::size_t v[4] = { point(p), point(q), point(r), point(t) };
-          // e1 x e2 points along +d: keep that order on the far side, reverse on the near
-          if(far) { s.faces.push_back({ v[0], v[1], v[2] }); s.faces.push_back({ v[0], v[2], v[3] }); }
-          else    { s.faces.push_back({ v[0], v[2], v[1] }); s.faces.push_back({ v[0], v[3], v[2] }); }
-          side.push_back(2 * d + far);
-          side.push_back(2 * d + far);
-        }
-    }
-  return s;
-}
-
 // Whether the face patches are exactly the box's sides: as many patches as sides, and
 // two faces share a patch if and only if they share a side.
 template <typename Mesh>
@@ -86,7 +48,7 @@ template <typename Mesh>
 void box_is_its_six_sides(double a, double b, double c, int n)
 {
   std::vector<int> side;
-  const Mesh m = fs_test::to_mesh<Mesh>(box(a, b, c, n, side));
+  const Mesh m = fs_test::to_mesh<Mesh>(fs_test::box(a, b, c, n, side));
   FS::Feature_aligned_segmentation<Mesh> seg(m, FS::parameters::crease_angle(20.));
   // the 12 box edges, n mesh edges each; the flat diagonals bend by 0 degrees
   BOOST_TEST(seg.number_of_crease_edges() == std::size_t(12 * n));
@@ -114,7 +76,7 @@ void box_is_its_six_sides(double a, double b, double c, int n)
 // uniform in [-amplitude, amplitude].
 fs_test::Soup noisy_box(double amplitude, int n, std::vector<int>& side)
 {
-  fs_test::Soup s = box(1., 1., 1., n, side);
+  fs_test::Soup s = fs_test::box(1., 1., 1., n, side);
   unsigned long long state = 12345;
   for(auto& p : s.points)
   {
@@ -150,7 +112,7 @@ BOOST_AUTO_TEST_CASE(thin_plate_keeps_its_rim)
 BOOST_AUTO_TEST_CASE(crease_ties_follow_alpha_edits)
 {
   std::vector<int> side;
-  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(1., 1., 1., 6, side));
   FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crease_angle(20.));
   BOOST_TEST(seg.number_of_patches() == 6u);
   // alpha -1: every weight (ties included) is Similarity + Award > 0: no cut pays
@@ -169,7 +131,7 @@ BOOST_AUTO_TEST_CASE(crease_ties_follow_alpha_edits)
 BOOST_AUTO_TEST_CASE(feature_edge_count_counts_creases_once)
 {
   std::vector<int> side;
-  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(1., 1., 1., 6, side));
   FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crease_angle(20.));
   auto counted = [&]() {
     std::size_t n = 0;
@@ -195,7 +157,7 @@ BOOST_AUTO_TEST_CASE(feature_edge_count_counts_creases_once)
 BOOST_AUTO_TEST_CASE(crease_angle_180_is_the_papers_pipeline)
 {
   std::vector<int> side;
-  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 6, side));
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(1., 1., 1., 6, side));
   FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crease_angle(180.));
   BOOST_TEST(seg.number_of_crease_edges() == 0u);
   BOOST_TEST(&seg.working_mesh() == &m);
@@ -313,7 +275,7 @@ BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)
   // every face of a clean box has a neighbour with its own normal: the roughness is 0,
   // no round of filtering runs, and the creases are those of the raw angles
   std::vector<int> side;
-  const SM m = fs_test::to_mesh<SM>(box(1., 2., 0.1, 5, side));
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(1., 2., 0.1, 5, side));
   FS::Feature_aligned_segmentation<SM> raw(m, FS::parameters::crease_angle(20.).crease_filter_iterations(0));
   FS::Feature_aligned_segmentation<SM> filtered(m, FS::parameters::crease_angle(20.));
   BOOST_TEST(raw.number_of_crease_edges() == 60u);
@@ -324,7 +286,7 @@ BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)
 BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)
 {
   std::vector<int> side;
-  const SM m = fs_test::to_mesh<SM>(box(1., 1., 1., 2, side));
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(1., 1., 1., 2, side));
   BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(0.)), FS::Invalid_input);
   BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(-5.)), FS::Invalid_input);
   BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(std::nan(""))),

@@ -52,6 +52,69 @@ Soup parametric_grid(int nu, int nv, bool periodic_u, bool periodic_v, F f)
   return s;
 }
 
+// Every triangle of s into four (the midpoints of its edges; same geometry): face f
+// becomes faces 4f .. 4f+3, the corners' triangles then the middle one.
+inline void subdivide_flat(Soup& s)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+  auto midpoint = [&](std::size_t a, std::size_t b) {
+    auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    auto it = mid.find(key);
+    if(it != mid.end()) return it->second;
+    std::array<double, 3> m;
+    for(int k = 0; k < 3; ++k) m[k] = 0.5 * (s.points[a][k] + s.points[b][k]);
+    s.points.push_back(m);
+    return mid[key] = s.points.size() - 1;
+  };
+  std::vector<std::vector<std::size_t> > nf;
+  nf.reserve(4 * s.faces.size());
+  for(const auto& f : s.faces)
+  {
+    std::size_t a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
+    nf.push_back({f[0], a, c}); nf.push_back({f[1], b, a});
+    nf.push_back({f[2], c, b}); nf.push_back({a, b, c});
+  }
+  s.faces.swap(nf);
+}
+
+// The box [0,a]x[0,b]x[0,c], each side an n x n grid of quads split in two triangles,
+// oriented outwards. `side` receives the side (0..5) of every triangle, in face order.
+inline Soup box(double a, double b, double c, int n, std::vector<int>& side)
+{
+  Soup s;
+  std::map<std::array<int, 3>, std::size_t> id;
+  const double size[3] = { a, b, c };
+  auto point = [&](std::array<int, 3> q) {
+    auto it = id.find(q);
+    if(it != id.end()) return it->second;
+    s.points.push_back({ size[0] * q[0] / n, size[1] * q[1] / n, size[2] * q[2] / n });
+    return id[q] = s.points.size() - 1;
+  };
+  side.clear();
+  for(int d = 0; d < 3; ++d)
+    for(int far = 0; far < 2; ++far)
+    {
+      const int d1 = (d + 1) % 3, d2 = (d + 2) % 3;
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+        {
+          std::array<int, 3> p{}, q{}, r{}, t{};
+          p[d] = q[d] = r[d] = t[d] = far * n;
+          p[d1] = i;     p[d2] = j;
+          q[d1] = i + 1; q[d2] = j;
+          r[d1] = i + 1; r[d2] = j + 1;
+          t[d1] = i;     t[d2] = j + 1;
+          std::size_t v[4] = { point(p), point(q), point(r), point(t) };
+          // e1 x e2 points along +d: keep that order on the far side, reverse on the near
+          if(far) { s.faces.push_back({ v[0], v[1], v[2] }); s.faces.push_back({ v[0], v[2], v[3] }); }
+          else    { s.faces.push_back({ v[0], v[2], v[1] }); s.faces.push_back({ v[0], v[3], v[2] }); }
+          side.push_back(2 * d + far);
+          side.push_back(2 * d + far);
+        }
+    }
+  return s;
+}
+
 // Icosahedron subdivided `level` times and projected on the sphere of radius r (outward).
 inline Soup icosphere(double r, int level)
 {
@@ -63,26 +126,7 @@ inline Soup icosphere(double r, int level)
              {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
              {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
   for(int l = 0; l < level; ++l)
-  {
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
-    auto midpoint = [&](std::size_t a, std::size_t b) {
-      auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      auto it = mid.find(key);
-      if(it != mid.end()) return it->second;
-      std::array<double, 3> m;
-      for(int k = 0; k < 3; ++k) m[k] = 0.5 * (s.points[a][k] + s.points[b][k]);
-      s.points.push_back(m);
-      return mid[key] = s.points.size() - 1;
-    };
-    std::vector<std::vector<std::size_t> > nf;
-    for(const auto& f : s.faces)
-    {
-      std::size_t a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
-      nf.push_back({f[0], a, c}); nf.push_back({f[1], b, a});
-      nf.push_back({f[2], c, b}); nf.push_back({a, b, c});
-    }
-    s.faces.swap(nf);
-  }
+    subdivide_flat(s);
   for(auto& p : s.points)
   {
     const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);

@@ -12,6 +12,10 @@
 
 #include "test_meshes.h"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace FS = CGAL::Feature_segmentation;
 
 namespace {
@@ -126,6 +130,55 @@ BOOST_AUTO_TEST_CASE(cylinder_surface_mesh) { cylinder_test<SM>(); }
 BOOST_AUTO_TEST_CASE(cylinder_polyhedron) { cylinder_test<Poly>(); }
 BOOST_AUTO_TEST_CASE(saddle_surface_mesh) { saddle_test<SM>(); }
 BOOST_AUTO_TEST_CASE(saddle_polyhedron) { saddle_test<Poly>(); }
+
+// A slab 1 x 1 x 0.02: beyond the rings, the neighbourhood radius (here 0.1 of the
+// diagonal, 5.6 edges of the top's 40 x 40 grid) reaches the rim, but the normal cone
+// (30 degrees) keeps out the rim's vertices (normals at 45 degrees) and the side walls
+// (90): every top vertex three rings or more from the rim sees a plane, curvature 0.
+// Without the cone, vertices 3 to 5 rings in fitted the walls and bent.
+BOOST_AUTO_TEST_CASE(radius_does_not_wrap_round_a_thin_wall)
+{
+  std::vector<int> side;
+  const int n = 40;
+  SM m = fs_test::to_mesh<SM>(fs_test::box(1., 1., 0.02, n, side));
+  auto cmap = get(CGAL::dynamic_vertex_property_t<FS::Principal_curvatures<Epick> >(), m);
+  FS::estimate_principal_curvatures(m, cmap, FS::parameters::neighborhood_radius(0.1));
+  std::size_t checked = 0;
+  double worst = 0;
+  for(auto v : vertices(m))
+  {
+    const auto& p = m.point(v);
+    const double lo = 3. / n - 1e-9, hi = 1. - lo;
+    if(p.z() != 0.02 || p.x() < lo || p.x() > hi || p.y() < lo || p.y() > hi)
+      continue;
+    ++checked;
+    worst = std::max({ worst, std::abs(get(cmap, v).k1), std::abs(get(cmap, v).k2) });
+  }
+  BOOST_TEST(checked == std::size_t((n - 5) * (n - 5))); // x, y in 3/40 .. 37/40
+  BOOST_TEST(worst < 1e-9);
+}
+
+// On a sphere the radius only enlarges the neighbourhood: the curvature stays 1/r.
+BOOST_AUTO_TEST_CASE(radius_keeps_the_sphere_round)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::icosphere(2., 4)); // 5120 faces, edge ~0.08
+  auto cmap = get(CGAL::dynamic_vertex_property_t<FS::Principal_curvatures<Epick> >(), m);
+  // 0.05 of the diagonal (4 x 2 sqrt 3): a radius of 0.69, about 8 rings, thinned to 32
+  FS::estimate_principal_curvatures(m, cmap, FS::parameters::neighborhood_radius(0.05));
+  double worst = 0;
+  for(auto v : vertices(m))
+    worst = std::max({ worst, std::abs(get(cmap, v).k1 - 0.5), std::abs(get(cmap, v).k2 - 0.5) });
+  BOOST_TEST(worst < 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(rejects_bad_radius)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::icosphere(1., 1));
+  auto cmap = get(CGAL::dynamic_vertex_property_t<FS::Principal_curvatures<Epick> >(), m);
+  for(double r : { -0.01, 1.5, std::nan("") })
+    BOOST_CHECK_THROW(FS::estimate_principal_curvatures(m, cmap, FS::parameters::neighborhood_radius(r)),
+                      FS::Invalid_input);
+}
 
 BOOST_AUTO_TEST_CASE(rejects_bad_rings)
 {

@@ -292,7 +292,7 @@ Patch_boundaries<TriangleMesh> make_patch_boundaries(const Segmentation_data<Tri
 ///   `segment_along_features()`:
 ///   - `gamma` (double >= 0): anisotropy of the metric, default 0.05
 ///   - `principal_curvature_map`: the vertex curvatures (else estimated with
-///     `neighborhood_rings`, default 2)
+///     `neighborhood_rings` and `neighborhood_radius`, as by `estimate_principal_curvatures()`)
 ///   - `feature_lines` (`Feature_lines<TriangleMesh>`) and/or `edge_is_feature_map`: the
 ///     features (else crest lines are detected with `strength_threshold`,
 ///     `umbilic_ratio`, `detect_ridges`, `detect_valleys`)

@@ -45,7 +45,7 @@ namespace Feature_segmentation {
 /// \param award the output `Award(e)`
 /// \param np optional named parameters: `vertex_point_map`, `geom_traits`, `gamma`
 ///   (default 0.05), `principal_curvature_map` (else estimated with
-///   `neighborhood_rings`), `feature_lines` (a `Feature_lines<TriangleMesh>`) and/or
+///   `neighborhood_rings` and `neighborhood_radius`), `feature_lines` (a `Feature_lines<TriangleMesh>`) and/or
 ///   `edge_is_feature_map` (else crest lines are detected with the options of
 ///   `detect_crest_lines()`)
 template <typename TriangleMesh, typename SimilarityMap, typename AwardMap,

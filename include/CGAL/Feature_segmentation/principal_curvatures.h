@@ -61,6 +61,14 @@ struct Principal_curvatures
 };
 
 /// \ingroup PkgFeatureSegmentationCurvature
+/// The default of the named parameter `neighborhood_radius`: 1% of the bounding box
+/// diagonal. On the meshes of the paper and the CAD parts of the evaluation (mean edge
+/// 0.4% to 1.6% of the diagonal) two rings reach about as far, so the rings decide
+/// there; on finer tessellations the radius decides, and CGAL's fandisk gives 20
+/// patches at 13k, 207k and 828k faces (25 to 29 at 828k with rings only).
+constexpr double default_neighborhood_radius = 0.01;
+
+/// \ingroup PkgFeatureSegmentationCurvature
 /// Estimates, at every vertex of `tm`, the principal curvatures, their directions and
 /// their derivatives along their directions, and writes them into `curvature_map`.
 ///
@@ -68,6 +76,12 @@ struct Principal_curvatures
 /// normal (angle-weighted average of the face normals) is fitted in the least-squares
 /// sense to the positions and normals of the vertices within `neighborhood_rings` rings
 /// (Goldfeather and Interrante 2004); its Hessian gives the curvatures and directions.
+/// The neighbourhood is a piece of surface, not only a ring count: beyond the rings, it
+/// takes the vertices reached through edges within `neighborhood_radius` times the
+/// bounding box diagonal whose normals are within 30 degrees of the vertex normal (so it
+/// does not wrap round a thin wall), thinned evenly to 32 neighbours when larger. A
+/// finer tessellation of the same shape is thus fitted over the same surface and gives
+/// the same crest lines.
 /// The derivatives follow Yoshizawa, Belyaev and Seidel 2005: the gradient of the signed
 /// fields `k_max` and `k_min`, linear over each triangle, is averaged over the faces
 /// around the vertex (weighted by area) and projected on the direction. Using positions
@@ -88,6 +102,8 @@ struct Principal_curvatures
 ///   - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
 ///   - `geom_traits`: default the kernel of the point type
 ///   - `neighborhood_rings` (unsigned int, at least 1): default 2
+///   - `neighborhood_radius` (double in [0, 1], a fraction of the bounding box diagonal;
+///     0: rings only): default `default_neighborhood_radius`
 template <typename TriangleMesh, typename VertexCurvatureMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void estimate_principal_curvatures(const TriangleMesh& tm,
@@ -104,11 +120,16 @@ void estimate_principal_curvatures(const TriangleMesh& tm,
   const int rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 2);
   if(rings < 1)
     throw Invalid_input("neighborhood_rings must be at least 1 (got " + std::to_string(rings) + ")");
+  const double radius = choose_parameter(get_parameter(np, internal_np::neighborhood_radius),
+                                         default_neighborhood_radius);
+  if(!(radius >= 0) || !(radius <= 1))
+    throw Invalid_input("neighborhood_radius must be a number in [0, 1] (a fraction of the bounding box "
+                        "diagonal; got " + std::to_string(radius) + ")");
 
   check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
 
   internal::Curvature_fitting<TriangleMesh, VPM, GT> fitting(tm, vpm);
-  fitting.estimate(static_cast<unsigned int>(rings));
+  fitting.estimate(static_cast<unsigned int>(rings), radius * fitting.geometry().bounding_box_diagonal());
   fitting.write(curvature_map);
 }
 

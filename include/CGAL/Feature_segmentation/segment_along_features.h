@@ -49,7 +49,7 @@ namespace Feature_segmentation {
 ///   - `gamma` (double >= 0): anisotropy of the metric, default 0.05
 ///   - `edge_alpha_map`: `alpha_e` for every edge (overrides `alpha`)
 ///   - `principal_curvature_map`: the vertex curvatures (else estimated with
-///     `neighborhood_rings`, default 2)
+///     `neighborhood_rings` and `neighborhood_radius`, as by `estimate_principal_curvatures()`)
 ///   - `feature_lines` (`Feature_lines<TriangleMesh>`) and/or `edge_is_feature_map`: the
 ///     features (else crest lines are detected with `strength_threshold`,
 ///     `umbilic_ratio`, `detect_ridges`, `detect_valleys`)

@@ -50,6 +50,15 @@ struct Mesh_geometry
   std::vector<std::array<std::size_t, 3> > face_vertices;
   double mean_edge_length = 0;
 
+  double bounding_box_diagonal() const
+  {
+    if(points.empty())
+      return 0.;
+    Vec3 lo = points.front(), hi = points.front();
+    for(const Vec3& p : points) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
+    return (hi - lo).norm();
+  }
+
   Mesh_geometry(const Indexing& indexing, VPM vpm) : idx(indexing)
   {
     const TriangleMesh& tm = idx.mesh();
@@ -131,7 +140,18 @@ public:
     : m_idx(tm), m_geom(m_idx, vpm)
   {}
 
-  void estimate(unsigned int rings)
+  // The neighbourhood of a vertex: its `rings` rings, extended through the edges to
+  // the vertices within `radius` of it whose normals are within the cone (0: rings
+  // only). The rings set the scale on coarse meshes, the radius on fine ones, so a
+  // finer tessellation of the same shape is fitted over the same piece of surface.
+  // Beyond the rings, a neighbour joins only if its normal is within 30 degrees of the
+  // vertex's: the radius must not carry the fit round a thin wall or a rounded edge
+  // onto the other side (blade: 89 patches without the cone, 40 on rings alone).
+  static constexpr double cone_cosine = 0.8660254;
+  // The most neighbours a fit takes (see collect_neighborhood()).
+  static constexpr std::size_t max_fit_points = 32;
+
+  void estimate(unsigned int rings, double radius = 0.)
   {
     const std::size_t nv = m_idx.number_of_vertices();
     m_curv.assign(nv, Vertex_curvature());
@@ -140,7 +160,7 @@ public:
     std::vector<std::size_t> neighborhood;
     for(std::size_t v = 0; v < nv; ++v)
     {
-      collect_rings(v, rings, stamp, neighborhood);
+      collect_neighborhood(v, rings, radius * radius, stamp, neighborhood);
       fit_vertex(v, neighborhood);
     }
     extremality();
@@ -190,25 +210,53 @@ private:
     }
   }
 
-  void collect_rings(std::size_t v, unsigned int rings, std::vector<std::size_t>& stamp,
-                     std::vector<std::size_t>& out) const
+  // Breadth-first from v: ring by ring up to `rings`, then on while a ring still adds
+  // vertices within sqrt(radius2) of v and the normal cone (the others are not entered).
+  void collect_neighborhood(std::size_t v, unsigned int rings, double radius2,
+                            std::vector<std::size_t>& stamp, std::vector<std::size_t>& out) const
   {
     out.clear();
     stamp[v] = v;
     std::size_t front_begin = 0;
     out.push_back(v);
-    for(unsigned int r = 0; r < rings; ++r)
+    const Vec3& p0 = m_geom.points[v];
+    const Vec3& n0 = m_geom.vertex_normals[v];
+    for(unsigned int r = 0; front_begin < out.size(); ++r)
     {
+      const bool within_rings = r < rings;
+      if(!within_rings && radius2 <= 0)
+        break;
       const std::size_t front_end = out.size();
       for(std::size_t i = front_begin; i < front_end; ++i)
         for(std::size_t k = m_adj_begin[out[i]]; k < m_adj_begin[out[i] + 1]; ++k)
         {
           std::size_t w = m_adj[k];
-          if(stamp[w] != v) { stamp[w] = v; out.push_back(w); }
+          if(stamp[w] == v)
+            continue;
+          if(!within_rings && ((m_geom.points[w] - p0).squaredNorm() > radius2 ||
+                               m_geom.vertex_normals[w].dot(n0) < cone_cosine))
+            continue;
+          stamp[w] = v;
+          out.push_back(w);
         }
       front_begin = front_end;
     }
     out.erase(out.begin()); // the vertex itself is the origin of the fit
+    // A neighbourhood of many rings (a fine mesh) is thinned to max_fit_points: the
+    // first ring whole, the rest evenly in breadth-first order (so every ring keeps its
+    // share). A cubic has 7 coefficients; 32 points give up to 96 equations, and the
+    // fit costs what three rings cost (fandisk at 828k faces: 20 patches with and
+    // without thinning, the curvature stage 2.6 s instead of 4.7 s).
+    if(out.size() > max_fit_points)
+    {
+      const std::size_t first_ring = std::min(out.size(), m_adj_begin[v + 1] - m_adj_begin[v]);
+      const std::size_t keep = std::max(first_ring, max_fit_points);
+      const std::size_t rest = out.size() - first_ring, slots = keep - first_ring;
+      std::size_t j = first_ring;
+      for(std::size_t i = 0; i < slots; ++i)
+        out[j++] = out[first_ring + (i * rest) / slots];
+      out.resize(j);
+    }
   }
 
   // Least-squares fit of z = A/2 x^2 + B xy + C/2 y^2 + D x^3 + E x^2 y + F x y^2 + G y^3
@@ -229,33 +277,33 @@ private:
       return;
     const bool cubic = nbh.size() >= 4;
     const int nu = cubic ? 7 : 3;
-    Eigen::Matrix<double, 7, 7> AtA = Eigen::Matrix<double, 7, 7>::Zero();
-    Eigen::Matrix<double, 7, 1> Atb = Eigen::Matrix<double, 7, 1>::Zero();
-    auto add_row = [&](const Eigen::Matrix<double, 7, 1>& row, double rhs) {
-      AtA.noalias() += row * row.transpose();
-      Atb.noalias() += row * rhs;
-    };
+    // rows of the least-squares system (one per position, two per usable normal),
+    // multiplied out at once: A^T A as a symmetric rank update
+    m_rows.resize(Eigen::Index(3 * nbh.size()), 7);
+    m_rhs.resize(Eigen::Index(3 * nbh.size()));
+    Eigen::Index r = 0;
     for(std::size_t q : nbh)
     {
       const Vec3 d = (m_geom.points[q] - p0) / h;
       const double x = d.dot(u), y = d.dot(w), z = d.dot(n);
-      Eigen::Matrix<double, 7, 1> row;
-      row << 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y;
-      if(!cubic) row.tail<4>().setZero();
-      add_row(row, z);
+      m_rows.row(r) << 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+      m_rhs(r++) = z;
       const Vec3& nq = m_geom.vertex_normals[q];
       const double nz = nq.dot(n);
       if(nz > 0.2) // normals folded past ~78 degrees say nothing reliable about slopes
       {
-        const double fx = -nq.dot(u) / nz, fy = -nq.dot(w) / nz;
-        Eigen::Matrix<double, 7, 1> rx, ry;
-        rx << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
-        ry << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
-        if(!cubic) { rx.tail<4>().setZero(); ry.tail<4>().setZero(); }
-        add_row(rx, fx);
-        add_row(ry, fy);
+        m_rows.row(r) << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
+        m_rhs(r++) = -nq.dot(u) / nz;
+        m_rows.row(r) << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
+        m_rhs(r++) = -nq.dot(w) / nz;
       }
     }
+    const auto A = m_rows.topRows(r);
+    if(!cubic) m_rows.topRows(r).rightCols<4>().setZero();
+    Eigen::Matrix<double, 7, 7> AtA = Eigen::Matrix<double, 7, 7>::Zero();
+    AtA.selfadjointView<Eigen::Lower>().rankUpdate(A.transpose());
+    AtA.triangularView<Eigen::StrictlyUpper>() = AtA.transpose();
+    const Eigen::Matrix<double, 7, 1> Atb = A.transpose() * m_rhs.head(r);
     // A small ridge term keeps the system well posed when the neighbourhood is nearly
     // collinear; it is negligible against the data term otherwise.
     const double lambda = 1e-9 * std::max(1e-300, AtA.trace());
@@ -314,6 +362,8 @@ private:
   Mesh_geometry<TriangleMesh, VPM> m_geom;
   std::vector<Vertex_curvature> m_curv;
   std::vector<std::size_t> m_adj_begin, m_adj;
+  Eigen::Matrix<double, Eigen::Dynamic, 7> m_rows; // work space of fit_vertex
+  Eigen::VectorXd m_rhs;
 };
 
 } // namespace internal

@@ -6,6 +6,7 @@
 
 // Principal curvatures (principal_curvatures.h)
 FS_add_named_parameter(neighborhood_rings_t, neighborhood_rings, neighborhood_rings)
+FS_add_named_parameter(neighborhood_radius_t, neighborhood_radius, neighborhood_radius)
 FS_add_named_parameter(principal_curvature_map_t, principal_curvature_map, principal_curvature_map)
 
 // Crest lines (crest_lines.h)
