@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/internal/crease_cut.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -281,6 +282,39 @@ BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)
   BOOST_TEST(raw.number_of_crease_edges() == 60u);
   BOOST_TEST(filtered.number_of_crease_edges() == 60u);
   for(auto e : edges(m)) BOOST_TEST(raw.is_crease_edge(e) == filtered.is_crease_edge(e));
+}
+
+// The filter with a stop measures the roughness inside its rounds (one pass over the
+// pairs); the result must be that of running exactly the rounds after which the
+// roughness, measured on its own, first falls to the stop.
+BOOST_AUTO_TEST_CASE(filter_stops_after_the_round_that_makes_the_normals_smooth)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(noisy_box(0.004, 16, side));
+  FS::internal::Mesh_indexing<SM> idx(m);
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area;
+  FS::internal::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
+  std::vector<std::size_t> begin, ring;
+  FS::internal::vertex_adjacent_faces(idx, begin, ring);
+  const double r0 = FS::internal::normal_roughness(normal, begin, ring);
+  const double stop = 0.1 * r0;
+  // the rounds needed, one at a time, measured by normal_roughness
+  int rounds = 0;
+  std::vector<Eigen::Vector3d> n = normal;
+  while(FS::internal::normal_roughness(n, begin, ring) > stop && rounds < 40)
+  {
+    n = FS::internal::filter_face_normals(n, 1., area, centroid, begin, ring, 1, 0.3, 0.);
+    ++rounds;
+  }
+  BOOST_TEST_MESSAGE("noisy box: roughness " << r0 << ", down to a tenth after " << rounds << " rounds");
+  BOOST_TEST(rounds >= 2);
+  BOOST_TEST(rounds < 40);
+  const auto stopped = FS::internal::filter_face_normals(normal, r0, area, centroid, begin, ring, 40, 0.3, stop);
+  const auto exact = FS::internal::filter_face_normals(normal, r0, area, centroid, begin, ring, rounds, 0.3, 0.);
+  const auto fewer = FS::internal::filter_face_normals(normal, r0, area, centroid, begin, ring, rounds - 1, 0.3, 0.);
+  BOOST_TEST((stopped == exact));
+  BOOST_TEST((stopped != fewer));
 }
 
 BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)
