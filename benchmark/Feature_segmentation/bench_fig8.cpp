@@ -435,7 +435,9 @@ int main(int argc, char** argv)
   double t_curvature = 0, t_crest = 0, t_terms = 0;
   try
   {
-    t_curvature = fastest(options.repeat, [&] { FS::estimate_principal_curvatures(mesh, curvature); });
+    t_curvature = fastest(options.repeat, [&] {
+      FS::estimate_principal_curvatures(mesh, curvature, FS::parameters::neighborhood_radius(0.)); // the paper's fit
+    });
     t_crest = fastest(options.repeat, [&] { lines = FS::detect_crest_lines(mesh, curvature); });
     t_terms = fastest(options.repeat, [&] {
       auto fresh = std::make_unique<FSI::Segmentation_data<Mesh> >(mesh);
@@ -529,7 +531,7 @@ int main(int argc, char** argv)
       double cost = 0;
       const std::size_t n = FS::segment_along_features(
         mesh, patch,
-        FS::parameters::alpha(r.alpha).watershed_distance(d).crease_angle(180.).cut_cost_output(&cost));
+        FS::parameters::alpha(r.alpha).watershed_distance(d).crease_angle(180.).neighborhood_radius(0.).cut_cost_output(&cost));
       const Reduced_result& mine = (d == FS::Watershed_distance::GEODESIC) ? r.geo : r.aniso;
       if(n != mine.patches || std::abs(cost - mine.cost) > 1e-9 * (1 + std::abs(cost)))
         check = std::string("DIFFERS for ") + (d == FS::Watershed_distance::GEODESIC ? "(b)" : "(c)") +

@@ -97,7 +97,11 @@ Segmentation run_package(const Mesh& mesh, double crease_angle)
   auto vp = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
   auto fp = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   const auto t0 = std::chrono::steady_clock::now();
-  FS::segment_along_features(mesh, vp, FS::parameters::crease_angle(crease_angle).crease_filter_iterations(crease_filter).face_patch_map(fp));
+  FS::segment_along_features(mesh, vp, FS::parameters::crease_angle(crease_angle)
+                                                   .crease_filter_iterations(crease_filter)
+                                                   // the paper's pipeline also fits on rings alone
+                                                   .neighborhood_radius(crease_angle >= 180. ? 0. : FS::default_neighborhood_radius)
+                                                   .face_patch_map(fp));
   Segmentation s;
   s.seconds = seconds_since(t0);
   s.face_patch.resize(mesh.number_of_faces());

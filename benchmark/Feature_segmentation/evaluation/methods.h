@@ -115,7 +115,8 @@ struct Prepared_mesh
   explicit Prepared_mesh(const Mesh& m)
     : mesh(m), curvature(get(CGAL::dynamic_vertex_property_t<Curvatures>(), m))
   {
-    FS::estimate_principal_curvatures(mesh, curvature);
+    // the paper's fit: two rings, no radius (neighborhood_radius 0)
+    FS::estimate_principal_curvatures(mesh, curvature, FS::parameters::neighborhood_radius(0.));
     unpruned = FS::detect_crest_lines(mesh, curvature, FS::parameters::strength_threshold(0.));
     pruned = FS::detect_crest_lines(mesh, curvature);
     auto wmap = get(CGAL::dynamic_edge_property_t<double>(), mesh);
