@@ -26,6 +26,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -89,18 +90,25 @@ double tangent_continuous_share(const Mesh& mesh, const std::vector<int>& labels
   return total > 0 ? low / total : 0.;
 }
 
-// --crease-filter; the library's default otherwise
+// --crease-filter, --alpha, --strength-threshold; the library's defaults otherwise
+// (alpha and the threshold apply to the package at creases, not to the paper's column)
 int crease_filter = FS::internal::Segmentation_options().crease_filter_iterations;
+double alpha = FS::internal::Segmentation_options().alpha;
+double strength_threshold = FS::default_strength_threshold;
 
 Segmentation run_package(const Mesh& mesh, double crease_angle)
 {
   auto vp = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
   auto fp = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   const auto t0 = std::chrono::steady_clock::now();
+  const bool paper = crease_angle >= 180.;
   FS::segment_along_features(mesh, vp, FS::parameters::crease_angle(crease_angle)
+                                                   .alpha(paper ? FS::internal::Segmentation_options().alpha : alpha)
+                                                   .strength_threshold(paper ? FS::default_strength_threshold
+                                                                             : strength_threshold)
                                                    .crease_filter_iterations(crease_filter)
                                                    // the paper's pipeline also fits on rings alone
-                                                   .neighborhood_radius(crease_angle >= 180. ? 0. : FS::default_neighborhood_radius)
+                                                   .neighborhood_radius(paper ? 0. : FS::default_neighborhood_radius)
                                                    .face_patch_map(fp));
   Segmentation s;
   s.seconds = seconds_since(t0);
@@ -134,6 +142,18 @@ int main(int argc, char** argv)
       }
       crease_filter = int(n);
     }
+    else if((a == "--alpha" || a == "--strength-threshold") && i + 1 < argc)
+    {
+      char* end = nullptr;
+      const double x = std::strtod(argv[++i], &end);
+      if(end == argv[i] || *end != '\0' || !std::isfinite(x) || (a != "--alpha" && x < 0))
+      {
+        std::cerr << "evaluate_cad_parts: " << a << " takes a finite number" << (a == "--alpha" ? "" : " >= 0")
+                  << " (got '" << argv[i] << "')\n";
+        return 2;
+      }
+      (a == "--alpha" ? alpha : strength_threshold) = x;
+    }
     else if(a == "--noise" && i + 1 < argc)
     {
       noise.clear();
@@ -141,7 +161,8 @@ int main(int argc, char** argv)
       std::string x;
       while(std::getline(ss, x, ',')) noise.push_back(std::stod(x));
     }
-    else { std::cerr << "usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]\n"; return 2; }
+    else { std::cerr << "usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]\n"
+                 "                          [--alpha A] [--strength-threshold S]\n"; return 2; }
   }
   const fsys::path dir = fsys::path(data) / "cad";
   if(data.empty() || !fsys::is_directory(dir))
