@@ -12,7 +12,12 @@ packages=(
   doxygen
   ccache
   clang libclang-rt-14-dev   # libFuzzer and the sanitizers (fuzz targets in the test command)
+  nlohmann-json3-dev libcpp-httplib-dev   # the editor's server (feature_segmentation edit)
+  nodejs           # npm ci puts three.js (the editor's page) and playwright-core into the build
+  chromium         # the editor's browser test (headless)
 )
+# npm: Debian's package, unless an npm comes with the installed Node.js (NodeSource's)
+if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 
 missing=()
 for p in "${packages[@]}"; do

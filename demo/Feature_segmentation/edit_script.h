@@ -14,9 +14,17 @@
 //   sketch [alpha A] X Y Z X Y Z ...   a sketched feature line through >= 2 points,
 //                            each moved to the nearest point of the surface (A > 1, default 2)
 //   undo                     take back the last edit not yet undone
-// REGION is 'ball X Y Z R' (the faces whose centroid lies within R > 0 of (X, Y, Z)) or
+//   redo                     make again the last edit taken back by undo (any other
+//                            edit after an undo forgets what could be redone)
+// REGION is 'ball X Y Z R' (the faces whose centroid lies within R > 0 of (X, Y, Z)),
 // 'faces I J ...' (faces of the input file, numbered from 0 in file order; a polygon
-// that was triangulated stands for all its triangles).
+// that was triangulated stands for all its triangles) or 'triangles I J ...' (triangles
+// of the repaired, triangulated mesh, in the order of segmentation.ply; the interactive
+// editor saves its regions so).
+//
+// The same edits arrive as JSON objects at the interactive editor (editor_api.h), which
+// turns them into Script_edit and applies them with the same Edit_runner, and saves its
+// history as a script with `write_edit_script()`, so the two cannot drift.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
 #define CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
@@ -60,17 +68,19 @@ public:
 /// A region of the mesh named in a script.
 struct Script_region
 {
-  bool is_ball = true;
+  enum Kind { BALL, FILE_FACES, TRIANGLES };
+  Kind kind = BALL;
   std::array<double, 3> center = {0., 0., 0.}; ///< a ball's centre
   double radius = 0;                           ///< a ball's radius, > 0
-  std::vector<std::size_t> file_faces;         ///< 'faces': indices of faces of the input file
+  std::vector<std::size_t> faces;              ///< 'faces': faces of the input file;
+                                               ///< 'triangles': faces of the mesh
 };
 
 /// One line of a script.
 struct Script_edit
 {
   std::size_t line = 0;
-  std::string verb;  ///< alpha, refine, coarsen, scale, merge, sketch or undo
+  std::string verb;  ///< alpha, refine, coarsen, scale, merge, sketch, undo or redo
   double value = 0;  ///< alpha: A; refine: D; coarsen: -D; scale: F; sketch: its alpha
   Script_region region;                        ///< refine, coarsen, scale, merge
   std::vector<std::array<double, 3> > points;  ///< sketch
@@ -110,11 +120,11 @@ inline double script_number(const std::string& token, const std::string& where, 
 inline std::size_t script_face_index(const std::string& token, const std::string& where)
 {
   if(token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
-    throw Edit_script_error(where + "faces: '" + token + "' is not a face index (an integer >= 0)");
+    throw Edit_script_error(where + "'" + token + "' is not a face index (an integer >= 0)");
   errno = 0;
   const unsigned long long i = std::strtoull(token.c_str(), nullptr, 10);
   if(errno == ERANGE)
-    throw Edit_script_error(where + "faces: face index " + token + " is out of range");
+    throw Edit_script_error(where + "face index " + token + " is out of range");
   return static_cast<std::size_t>(i);
 }
 
@@ -136,17 +146,18 @@ inline Script_region script_region(const std::vector<std::string>& tokens, std::
       throw Edit_script_error(where + "ball: the radius must be > 0 (got " + tokens[first + 4] + ")");
     return r;
   }
-  if(kind == "faces")
+  if(kind == "faces" || kind == "triangles")
   {
     if(last - first < 2)
-      throw Edit_script_error(where + tokens[0] + ": 'faces' needs at least one face index (usage: " +
+      throw Edit_script_error(where + tokens[0] + ": '" + kind + "' needs at least one face index (usage: " +
                               usage + ")");
-    r.is_ball = false;
+    r.kind = kind == "faces" ? Script_region::FILE_FACES : Script_region::TRIANGLES;
     for(std::size_t i = first + 1; i < last; ++i)
-      r.file_faces.push_back(script_face_index(tokens[i], where));
+      r.faces.push_back(script_face_index(tokens[i], where + kind + ": "));
     return r;
   }
-  throw Edit_script_error(where + tokens[0] + ": expected a region, 'ball X Y Z R' or 'faces I J ...' (got " +
+  throw Edit_script_error(where + tokens[0] + ": expected a region, 'ball X Y Z R', 'faces I J ...' or "
+                          "'triangles I J ...' (got " +
                           (kind.empty() ? std::string("nothing") : "'" + kind + "'") + "; usage: " +
                           usage + ")");
 }
@@ -179,6 +190,7 @@ inline Edit_script read_edit_script(std::istream& in, const std::string& path)
   Edit_script script;
   script.path = path;
   std::size_t undoable = 0; // edits that an 'undo' can still take back
+  std::size_t redoable = 0; // undone edits that a 'redo' can still make again
   std::string text;
   for(std::size_t line = 1; std::getline(in, text); ++line)
   {
@@ -249,10 +261,18 @@ inline Edit_script read_edit_script(std::istream& in, const std::string& path)
       if(undoable == 0)
         throw Edit_script_error(where + "undo: no edit to undo");
     }
+    else if(e.verb == "redo")
+    {
+      arity(n == 1, "redo");
+      if(redoable == 0)
+        throw Edit_script_error(where + "redo: no undone edit to redo");
+    }
     else
       throw Edit_script_error(where + "unknown verb '" + e.verb +
-                              "' (expected alpha, refine, coarsen, scale, merge, sketch or undo)");
-    undoable = (e.verb == "undo") ? undoable - 1 : undoable + 1;
+                              "' (expected alpha, refine, coarsen, scale, merge, sketch, undo or redo)");
+    if(e.verb == "undo") { --undoable; ++redoable; }
+    else if(e.verb == "redo") { ++undoable; --redoable; }
+    else { ++undoable; redoable = 0; }
     script.edits.push_back(e);
   }
   if(in.bad())
@@ -260,16 +280,57 @@ inline Edit_script read_edit_script(std::istream& in, const std::string& path)
   return script;
 }
 
-/// Checks that every face index of `script` names a face of the input file.
+/// Checks that every face index of `script` names a face of the input file ('faces') or
+/// a triangle of the mesh ('triangles').
 /// \throws Edit_script_error on the first index out of range
-inline void check_face_indices(const Edit_script& script, std::size_t number_of_file_faces)
+inline void check_face_indices(const Edit_script& script, std::size_t number_of_file_faces,
+                               std::size_t number_of_triangles)
 {
   for(const Script_edit& e : script.edits)
-    for(std::size_t f : e.region.file_faces)
-      if(f >= number_of_file_faces)
-        throw Edit_script_error(internal::script_place(script.path, e.line) + "faces: face index " +
-                                std::to_string(f) + " is out of range (the mesh file has " +
-                                std::to_string(number_of_file_faces) + " faces)");
+  {
+    if(e.region.kind == Script_region::BALL) continue;
+    const bool file = e.region.kind == Script_region::FILE_FACES;
+    const std::size_t n = file ? number_of_file_faces : number_of_triangles;
+    for(std::size_t f : e.region.faces)
+      if(f >= n)
+        throw Edit_script_error(internal::script_place(script.path, e.line) + (file ? "faces" : "triangles") +
+                                ": face index " + std::to_string(f) + " is out of range (the mesh " +
+                                (file ? "file has " : "has ") + std::to_string(n) +
+                                (file ? " faces)" : " triangles)"));
+  }
+}
+
+/// Writes `edits` as a script that `read_edit_script()` reads back to the same edits
+/// (numbers with 17 significant digits, so they round-trip exactly).
+inline void write_edit_script(std::ostream& os, const std::vector<Script_edit>& edits)
+{
+  const std::streamsize precision = os.precision(17);
+  for(const Script_edit& e : edits)
+  {
+    const bool coarsen = e.verb == "coarsen";
+    os << e.verb;
+    if(e.verb == "refine" || coarsen || e.verb == "scale" || e.verb == "merge")
+    {
+      const Script_region& r = e.region;
+      if(r.kind == Script_region::BALL)
+        os << " ball " << r.center[0] << ' ' << r.center[1] << ' ' << r.center[2] << ' ' << r.radius;
+      else
+      {
+        os << (r.kind == Script_region::FILE_FACES ? " faces" : " triangles");
+        for(std::size_t f : r.faces) os << ' ' << f;
+      }
+      if(e.verb != "merge") os << ' ' << (coarsen ? -e.value : e.value);
+    }
+    else if(e.verb == "alpha")
+      os << ' ' << e.value;
+    else if(e.verb == "sketch")
+    {
+      os << " alpha " << e.value;
+      for(const std::array<double, 3>& p : e.points) os << ' ' << p[0] << ' ' << p[1] << ' ' << p[2];
+    }
+    os << '\n';
+  }
+  os.precision(precision);
 }
 
 /// What one edit did, for the summary.
@@ -285,6 +346,7 @@ struct Edit_record
   std::size_t faces = 0;          ///< refine, coarsen, scale, merge: faces of the region
   std::size_t points = 0;         ///< sketch: its points
   std::size_t undone_line = 0;    ///< undo: the line of the edit it took back
+  std::size_t redone_line = 0;    ///< redo: the line of the edit it made again
 };
 
 /// Applies the edits of a script to a segmentation, in order.
@@ -351,18 +413,35 @@ public:
     {
       // The library records no undo step for an edit that changed nothing (an empty
       // region, a merge inside one patch): undoing such an edit changes nothing either.
-      CGAL_assertion(!m_done.empty());
+      if(m_done.empty())
+        throw Edit_script_error(internal::script_place(script.path, e.line) + "undo: no edit to undo");
       const Done last = m_done.back();
-      m_done.pop_back();
       if(last.recorded && !m_segmentation.undo())
         throw Edit_script_error(internal::script_place(script.path, e.line) +
                                 "undo: cannot take back line " + std::to_string(last.line) +
                                 ": the segmentation keeps the last " +
                                 std::to_string(Segmentation::maximum_undo_depth) + " edits only");
+      m_done.pop_back();
+      m_undone.push_back(last);
       r.undone_line = last.line;
     }
+    else if(e.verb == "redo")
+    {
+      if(m_undone.empty())
+        throw Edit_script_error(internal::script_place(script.path, e.line) + "redo: no undone edit to redo");
+      const Done last = m_undone.back();
+      if(last.recorded && !m_segmentation.redo())
+        throw Edit_script_error(internal::script_place(script.path, e.line) + "redo: cannot make line " +
+                                std::to_string(last.line) + " again");
+      m_undone.pop_back();
+      m_done.push_back(last);
+      r.redone_line = last.line;
+    }
     else
+    {
       m_done.push_back({e.line, m_segmentation.number_of_recorded_edits() > recorded});
+      m_undone.clear();
+    }
     const auto end = Clock::now();
     r.prepare_seconds = std::chrono::duration<double>(prepared - start).count();
     r.seconds = std::chrono::duration<double>(end - prepared).count();
@@ -381,10 +460,10 @@ private:
     bool recorded; // whether the library recorded an undo step for it
   };
 
-  std::vector<face_descriptor> region_faces(const Script_region& region) const
+  std::vector<face_descriptor> region_faces(const Script_region& region)
   {
     std::vector<face_descriptor> found;
-    if(region.is_ball)
+    if(region.kind == Script_region::BALL)
     {
       const typename Kernel::Point_3 c(region.center[0], region.center[1], region.center[2]);
       const double r2 = region.radius * region.radius;
@@ -399,8 +478,16 @@ private:
       }
       return found;
     }
-    for(std::size_t f : region.file_faces)
-      m_correspondence.mesh_faces_of_file_face(f, found);
+    if(region.kind == Script_region::TRIANGLES)
+    {
+      if(m_triangles.empty())
+        m_triangles.assign(faces(m_mesh).begin(), faces(m_mesh).end());
+      for(std::size_t f : region.faces)
+        found.push_back(m_triangles.at(f)); // checked by check_face_indices()
+    }
+    else
+      for(std::size_t f : region.faces)
+        m_correspondence.mesh_faces_of_file_face(f, found);
     std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());
     return found;
@@ -432,6 +519,8 @@ private:
   double& m_solver_seconds;
   std::unique_ptr<Tree> m_tree;
   std::vector<Done> m_done;
+  std::vector<Done> m_undone;                  // taken back, in the order a redo makes them again
+  std::vector<face_descriptor> m_triangles;    // the mesh's faces in order, for 'triangles'
 };
 
 } // namespace fs_demo

@@ -198,6 +198,83 @@ BOOST_AUTO_TEST_CASE(sketch_splits_a_featureless_plane)
   BOOST_CHECK_THROW(seg.add_sketch(sketch, 1.0), FS::Invalid_input);
 }
 
+// Redo makes an undone edit again, exactly: on the torus at alpha 0.6 (4 bands), alpha
+// 1.0 gives 8, a merge across one ridge circle 7, then a sketch round the tube adds
+// feature edges across the bands. Undoing the three and
+// redoing them walks through the same labels, feature edges and cut costs; a new edit
+// after an undo forgets the redo history.
+BOOST_AUTO_TEST_CASE(redo_makes_every_kind_of_edit_again)
+{
+  fs_test::Lobed_torus torus;
+  SM m = fs_test::to_mesh<SM>(torus.soup(80, 64));
+  Segmentation seg(m, FS::parameters::alpha(0.6));
+  BOOST_REQUIRE(seg.number_of_patches() == 4u);
+  BOOST_TEST(!seg.redo());
+  auto features = [&] {
+    std::vector<char> f;
+    for(auto e : m.edges()) f.push_back(seg.is_feature_edge(e) ? 1 : 0);
+    return f;
+  };
+  struct Step { std::vector<std::size_t> labels; std::vector<char> features; double cost; std::size_t patches; };
+  std::vector<Step> steps{{labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()}};
+  BOOST_TEST(seg.set_alpha(1.0) == 8u);
+  steps.push_back({labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()});
+  std::vector<SM::Face_index> stroke;
+  for(auto f : m.faces())
+    if(std::abs(tube_angle(m.point(m.target(m.halfedge(f))), torus.R) - M_PI / 2) < 0.15) stroke.push_back(f);
+  BOOST_TEST(seg.merge_patches(stroke) == 7u);
+  steps.push_back({labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()});
+  // a sketch: the mesh's vertices on one meridian of the tube (a closed loop round it)
+  std::vector<Segmentation::Sketch_point> sketch;
+  const double theta = 0.05; // the angle round the torus's axis, off the grid's vertices
+  for(int i = 0; i <= 48; ++i)
+  {
+    const std::array<double, 3> t = torus.point(theta, 2 * M_PI * i / 48);
+    const K::Point_3 target(t[0], t[1], t[2]);
+    SM::Face_index nearest;
+    double best = 1e300;
+    for(auto f : m.faces())
+    {
+      auto h = m.halfedge(f);
+      const double d = CGAL::to_double(CGAL::squared_distance(
+        K::Triangle_3(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))), target));
+      if(d < best) { best = d; nearest = f; }
+    }
+    auto h = m.halfedge(nearest);
+    const K::Point_3 p = K::Triangle_3(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))))
+                           .supporting_plane().projection(target);
+    sketch.push_back({nearest, p});
+  }
+  seg.add_sketch(sketch);
+  steps.push_back({labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()});
+  BOOST_TEST(steps.back().features != steps[2].features); // the sketch added feature edges
+  auto check = [&](const Step& s) {
+    BOOST_TEST(seg.number_of_patches() == s.patches);
+    BOOST_TEST((labels(m, seg) == s.labels));
+    BOOST_TEST((features() == s.features));
+    BOOST_TEST(seg.cut_cost() == s.cost);
+  };
+  for(int i = 3; i > 0; --i)
+  {
+    BOOST_TEST(seg.undo());
+    BOOST_TEST(seg.number_of_redoable_edits() == std::size_t(4 - i));
+    check(steps[i - 1]);
+  }
+  for(int i = 1; i <= 3; ++i)
+  {
+    BOOST_TEST(seg.redo());
+    check(steps[i]);
+  }
+  BOOST_TEST(!seg.redo());
+  // undo twice, then a new edit: nothing left to redo
+  BOOST_TEST(seg.undo());
+  BOOST_TEST(seg.undo());
+  check(steps[1]);
+  BOOST_TEST(seg.set_alpha(0.6) == 4u);
+  BOOST_TEST(seg.number_of_redoable_edits() == 0u);
+  BOOST_TEST(!seg.redo());
+}
+
 // The class's boundaries reuse its precomputation and equal those the free function
 // computes from the same labels.
 BOOST_AUTO_TEST_CASE(boundaries_from_the_class)

@@ -293,6 +293,7 @@ public:
     const std::size_t merged = *touched.begin();
     for(std::size_t& l : m_state.labels) if(touched.count(l)) l = merged;
     m_state.number_of_patches = normalize_labels(m_state.labels);
+    m_discarded_redo.clear(); // a merge cannot fail
     return number_of_patches();
   }
 
@@ -394,23 +395,30 @@ public:
 
   /// Takes back the last edit, restoring the labels exactly. Returns `false` when there
   /// is nothing to undo (no edit yet, or `maximum_undo_depth` edits already undone).
+  /// The edit taken back can be made again with `redo()`.
   bool undo()
   {
     if(m_undo.empty()) return false;
     Undo_record& r = m_undo.back();
-    m_state = std::move(r.state);
-    m_heavy = r.heavy;
-    if(r.features)
-    {
-      m_data.is_feature_edge = std::move(r.features->is_feature_edge);
-      m_data.point_sum = std::move(r.features->point_sum);
-      m_data.point_count = std::move(r.features->point_count);
-      m_data.terms.dual_vertices = std::move(r.features->dual_vertices);
-      m_data.terms.similarity = std::move(r.features->similarity);
-      m_data.terms.award = std::move(r.features->award);
-      m_data.number_of_feature_edges = r.features->number_of_feature_edges;
-    }
+    m_redo.push_back(snapshot(r.features != nullptr));
+    restore(std::move(r));
     m_undo.pop_back();
+    return true;
+  }
+
+  /// The number of undone edits that `redo()` can make again: every `undo()` adds one,
+  /// every `redo()` takes one, and any other edit that records an undo step clears them.
+  std::size_t number_of_redoable_edits() const { return m_redo.size(); }
+
+  /// Makes again the last edit taken back by `undo()`, restoring its result exactly
+  /// (no solve runs). Returns `false` when there is nothing to redo.
+  bool redo()
+  {
+    if(m_redo.empty()) return false;
+    Undo_record& r = m_redo.back();
+    m_undo.push_back(snapshot(r.features != nullptr));
+    restore(std::move(r));
+    m_redo.pop_back();
     return true;
   }
   /// @}
@@ -451,7 +459,8 @@ private:
 
   double weight(std::size_t e) const { return m_data.weight(e, m_state.alpha_e[e]); }
 
-  void push_undo(bool with_features = false)
+  // The current state, for an undo or a redo record (the features only for a sketch).
+  Undo_record snapshot(bool with_features) const
   {
     Undo_record r;
     r.state = m_state;
@@ -462,10 +471,35 @@ private:
                                         m_data.terms.dual_vertices, m_data.terms.similarity,
                                         m_data.terms.award, m_data.number_of_feature_edges});
     }
-    m_undo.push_back(std::move(r));
+    return r;
+  }
+
+  void restore(Undo_record&& r)
+  {
+    m_state = std::move(r.state);
+    m_heavy = r.heavy;
+    if(r.features)
+    {
+      m_data.is_feature_edge = std::move(r.features->is_feature_edge);
+      m_data.point_sum = std::move(r.features->point_sum);
+      m_data.point_count = std::move(r.features->point_count);
+      m_data.terms.dual_vertices = std::move(r.features->dual_vertices);
+      m_data.terms.similarity = std::move(r.features->similarity);
+      m_data.terms.award = std::move(r.features->award);
+      m_data.number_of_feature_edges = r.features->number_of_feature_edges;
+    }
+  }
+
+  // Called by an edit before it changes anything: records the state for undo() and
+  // forgets what redo() could make again (a new edit starts a new branch of history).
+  void push_undo(bool with_features = false)
+  {
+    m_undo.push_back(snapshot(with_features));
     ++m_recorded;
     if(m_undo.size() > maximum_undo_depth)
       m_undo.erase(m_undo.begin());
+    m_discarded_redo.swap(m_redo); // given back by transaction() if the edit fails
+    m_redo.clear();
   }
 
   internal::Oversegmentation singleton_oversegmentation(const std::vector<char>* region) const
@@ -570,10 +604,13 @@ private:
     try { edit(); }
     catch(...)
     {
-      undo();
+      restore(std::move(m_undo.back()));
+      m_undo.pop_back();
+      m_redo.swap(m_discarded_redo);
       --m_recorded; // the edit did not happen
       throw;
     }
+    m_discarded_redo.clear();
   }
 
   void check_face(face_descriptor f) const
@@ -767,6 +804,8 @@ private:
   State m_state;
   std::shared_ptr<Heavy> m_heavy;
   std::vector<Undo_record> m_undo;
+  std::vector<Undo_record> m_redo;
+  std::vector<Undo_record> m_discarded_redo; // m_redo while an edit runs, kept in case it fails
   std::size_t m_recorded = 0;
 };
 

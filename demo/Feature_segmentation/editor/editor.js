@@ -1,0 +1,358 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The interactive editor's page: draws the mesh with one colour per patch, the crest
+// lines, creases and patch boundaries, and turns the gestures of the authors' tool into
+// the JSON edits of the program's /api/edit (editor_api.h documents them). Edits are
+// sent one at a time; a global alpha moved while an edit runs is sent once it returns.
+
+import * as THREE from 'three';
+import { OrbitControls } from './OrbitControls.js';
+
+const $ = (id) => document.getElementById(id);
+const view = $('view');
+
+// ---- the server -------------------------------------------------------------------
+async function api(path, body) {
+  const init = body === undefined ? {} : {
+    method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) };
+  const res = await fetch(path, init);
+  const json = await res.json();
+  if (!res.ok) throw new Error(json.error || res.statusText);
+  return json;
+}
+
+function status(text, isError = false) {
+  $('status').textContent = text;
+  $('status').classList.toggle('error', isError);
+}
+
+// ---- the scene ----------------------------------------------------------------------
+const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio);
+renderer.setClearColor(0xffffff);
+view.appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+const camera = new THREE.PerspectiveCamera(35, 1, 0.01, 100);
+scene.add(new THREE.HemisphereLight(0xffffff, 0x666666, 1.6));
+const sun = new THREE.DirectionalLight(0xffffff, 1.4);
+camera.add(sun);
+sun.position.set(0.5, 1, 1);
+scene.add(camera);
+const controls = new OrbitControls(camera, renderer.domElement);
+controls.enableDamping = false;
+
+let mesh = null;            // THREE.Mesh, non-indexed: three vertices per triangle
+let triangles = null;       // Uint32Array of the server's triangles
+let positions = null;       // Float32Array of the server's vertices
+let centroids = null;       // Float32Array, 3 per triangle
+let facePatches = null;     // per triangle
+let diagonal = 1;
+const region = new Set();   // painted triangles
+const overlays = { lines: new THREE.Group(), creases: new THREE.Group(), boundaries: new THREE.Group() };
+for (const g of Object.values(overlays)) scene.add(g);
+const strokeLine = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xff00ff }));
+scene.add(strokeLine);
+
+function resize() {
+  const w = view.clientWidth, h = view.clientHeight;
+  renderer.setSize(w, h, false);
+  camera.aspect = w / Math.max(h, 1);
+  camera.updateProjectionMatrix();
+  render();
+}
+function render() { renderer.render(scene, camera); }
+controls.addEventListener('change', render);
+window.addEventListener('resize', resize);
+
+// A patch's colour: hues spread by the golden ratio, so that neighbours differ.
+function patchColor(p, out) {
+  out.setHSL((p * 0.618033988749895) % 1, 0.55, 0.62);
+  return out;
+}
+
+function colorFaces() {
+  const colors = mesh.geometry.getAttribute('color');
+  const c = new THREE.Color();
+  const paint = new THREE.Color(0xffe600);
+  for (let f = 0; f < facePatches.length; ++f) {
+    patchColor(facePatches[f], c);
+    if (region.has(f)) c.lerp(paint, 0.55);
+    for (let k = 0; k < 3; ++k) colors.setXYZ(3 * f + k, c.r, c.g, c.b);
+  }
+  colors.needsUpdate = true;
+  render();
+}
+
+function buildMesh(data) {
+  positions = Float32Array.from(data.vertices);
+  triangles = Uint32Array.from(data.triangles);
+  diagonal = data.diagonal;
+  const indexed = new THREE.BufferGeometry();
+  indexed.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+  indexed.setIndex(new THREE.BufferAttribute(triangles, 1));
+  indexed.computeVertexNormals();
+  const geometry = indexed.toNonIndexed();
+  const n = triangles.length / 3;
+  geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(9 * n), 3));
+  centroids = new Float32Array(3 * n);
+  for (let f = 0; f < n; ++f)
+    for (let k = 0; k < 3; ++k)
+      centroids[3 * f + k] = (positions[3 * triangles[3 * f] + k] + positions[3 * triangles[3 * f + 1] + k] +
+                              positions[3 * triangles[3 * f + 2] + k]) / 3;
+  mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
+    vertexColors: true, side: THREE.DoubleSide, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+  scene.add(mesh);
+  geometry.computeBoundingSphere();
+  const s = geometry.boundingSphere;
+  controls.target.copy(s.center);
+  camera.near = s.radius / 100; camera.far = s.radius * 100;
+  camera.position.copy(s.center).add(new THREE.Vector3(1, 0.8, 1.4).normalize().multiplyScalar(s.radius * 3.2));
+  camera.updateProjectionMatrix();
+  controls.update();
+}
+
+function polylines(list, color, group) {
+  group.clear();
+  const material = new THREE.LineBasicMaterial({ color, depthTest: true });
+  for (const xyz of list) {
+    if (xyz.length < 6) continue;
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(Float32Array.from(xyz), 3));
+    group.add(new THREE.Line(g, material));
+  }
+}
+
+async function loadFeatures() {
+  const f = await api('/api/features');
+  overlays.lines.clear();
+  const ridges = new THREE.Group(), valleys = new THREE.Group(), user = new THREE.Group();
+  polylines(f.ridges, 0xd62728, ridges);
+  polylines(f.valleys, 0x1f5bd6, valleys);
+  polylines(f.user, 0xff00ff, user);
+  overlays.lines.add(ridges, valleys, user);
+  overlays.creases.clear();
+  if (f.creases.length) {
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(Float32Array.from(f.creases), 3));
+    overlays.creases.add(new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color: 0x111111 })));
+  }
+  render();
+}
+
+async function loadBoundaries() {
+  if (!$('show-boundaries').checked) { overlays.boundaries.clear(); render(); return; }
+  const b = await api('/api/boundaries?smooth=' + ($('smooth-boundaries').checked ? 1 : 0));
+  polylines(b.curves, 0x000000, overlays.boundaries);
+  render();
+}
+
+async function loadLabels() {
+  const l = await api('/api/labels');
+  facePatches = l.face_patches;
+  colorFaces();
+}
+
+// ---- the state ----------------------------------------------------------------------
+const state = { current: null, busy: false, pendingAlpha: null };
+window.editor = state; // for the browser test and the curious
+
+function showState(s) {
+  state.current = s;
+  $('patches').textContent = s.patches;
+  $('cut-cost').textContent = s.cut_cost.toFixed(3);
+  $('last-edit').textContent = s.last_edit
+    ? `${s.last_edit.op}: ${(1000 * s.last_edit.server_seconds).toFixed(1)} ms` : '–';
+  if (state.pendingAlpha === null && document.activeElement !== $('alpha')) {
+    $('alpha').value = s.alpha;
+  }
+  $('alpha-value').textContent = Number(s.alpha).toFixed(2);
+  $('undo').disabled = !s.can_undo;
+  $('redo').disabled = !s.can_redo;
+  $('edit-count').textContent = s.edits.length;
+  const list = $('edits');
+  list.replaceChildren(...s.edits.map((line) => {
+    const li = document.createElement('li');
+    li.textContent = line.length > 80 ? line.slice(0, 77) + '...' : line;
+    return li;
+  }));
+  list.scrollTop = list.scrollHeight;
+}
+
+// Sends one edit; the page shows its result. Global alpha moves made meanwhile are
+// folded into one request sent when this one returns.
+async function edit(request) {
+  if (state.busy) {
+    if (request.op === 'alpha') { state.pendingAlpha = request.value; return; }
+    status('busy: the last edit is still running', true);
+    return;
+  }
+  state.busy = true;
+  document.body.style.cursor = 'progress';
+  try {
+    const s = await api('/api/edit', request);
+    showState(s);
+    await loadLabels();
+    if (request.op === 'sketch' || request.op === 'undo' || request.op === 'redo') await loadFeatures();
+    await loadBoundaries();
+    status(`${request.op}: ${s.patches} patches`);
+  } catch (e) {
+    status(`${request.op}: ${e.message}`, true);
+  } finally {
+    state.busy = false;
+    document.body.style.cursor = '';
+    if (state.pendingAlpha !== null) {
+      const a = state.pendingAlpha;
+      state.pendingAlpha = null;
+      if (a !== state.current.alpha) await edit({ op: 'alpha', value: a });
+    }
+  }
+}
+
+// ---- picking and gestures -----------------------------------------------------------
+const raycaster = new THREE.Raycaster();
+const pointer = new THREE.Vector2();
+function pick(event) {
+  const r = renderer.domElement.getBoundingClientRect();
+  pointer.set(((event.clientX - r.left) / r.width) * 2 - 1, -((event.clientY - r.top) / r.height) * 2 + 1);
+  raycaster.setFromCamera(pointer, camera);
+  const hit = raycaster.intersectObject(mesh, false)[0];
+  return hit ? { point: hit.point, face: hit.faceIndex } : null;
+}
+
+function brushRadius() { return Number($('brush').value) * diagonal; }
+
+function facesNear(point, radius, into) {
+  const r2 = radius * radius;
+  for (let f = 0; f < centroids.length / 3; ++f) {
+    const dx = centroids[3 * f] - point.x, dy = centroids[3 * f + 1] - point.y, dz = centroids[3 * f + 2] - point.z;
+    if (dx * dx + dy * dy + dz * dz <= r2) into.add(f);
+  }
+}
+
+function toolOf(event) {
+  if (event.altKey) return 'sketch';
+  if (event.ctrlKey || event.metaKey) return 'merge';
+  if (event.shiftKey) return 'paint';
+  return document.querySelector('input[name=tool]:checked').value;
+}
+
+let stroke = null; // { tool, faces: Set, points: [Vector3] }
+function showStroke() {
+  const pts = stroke ? stroke.points : [];
+  strokeLine.geometry.dispose();
+  strokeLine.geometry = new THREE.BufferGeometry().setFromPoints(pts);
+  render();
+}
+
+function strokeAt(event) {
+  const hit = pick(event);
+  if (!hit) return;
+  if (stroke.tool === 'paint') {
+    const before = region.size;
+    facesNear(hit.point, brushRadius(), region);
+    if (region.size !== before) { $('region-size').textContent = region.size; colorFaces(); }
+  } else if (stroke.tool === 'merge') {
+    stroke.faces.add(hit.face);
+    stroke.points.push(hit.point.clone());
+    showStroke();
+  } else {
+    const last = stroke.points[stroke.points.length - 1];
+    if (!last || last.distanceTo(hit.point) > diagonal / 400) { stroke.points.push(hit.point.clone()); showStroke(); }
+  }
+}
+
+renderer.domElement.addEventListener('pointerdown', (event) => {
+  if (!mesh || event.button !== 0) return;
+  const tool = toolOf(event);
+  if (tool === 'orbit') return;
+  controls.enabled = false;
+  stroke = { tool, faces: new Set(), points: [] };
+  renderer.domElement.setPointerCapture(event.pointerId);
+  strokeAt(event);
+});
+renderer.domElement.addEventListener('pointermove', (event) => { if (stroke) strokeAt(event); });
+renderer.domElement.addEventListener('pointerup', async () => {
+  if (!stroke) return;
+  const s = stroke;
+  stroke = null;
+  controls.enabled = true;
+  showStroke();
+  if (s.tool === 'merge' && s.faces.size > 0) await edit({ op: 'merge', faces: [...s.faces] });
+  else if (s.tool === 'sketch' && s.points.length >= 2)
+    await edit({ op: 'sketch', points: s.points.map((p) => [p.x, p.y, p.z]) });
+});
+
+// Shift+wheel: refine/coarsen (a painted region, else the global alpha); Ctrl+Shift+wheel:
+// the brush. The plain wheel zooms.
+renderer.domElement.addEventListener('wheel', (event) => {
+  if (!event.shiftKey) return;
+  event.preventDefault();
+  event.stopImmediatePropagation();
+  const up = (event.deltaY || event.deltaX) < 0;
+  if (event.ctrlKey || event.metaKey) {
+    const b = $('brush');
+    b.value = Number(b.value) * (up ? 1.15 : 1 / 1.15);
+    $('brush-value').textContent = Number(b.value).toFixed(3);
+    return;
+  }
+  if (region.size > 0) regionEdit(up ? 'refine' : 'coarsen');
+  else {
+    const base = state.pendingAlpha ?? state.current.alpha;
+    const a = Math.round((base + (up ? 0.05 : -0.05)) * 100) / 100;
+    $('alpha').value = a;
+    $('alpha-value').textContent = a.toFixed(2);
+    edit({ op: 'alpha', value: a });
+  }
+}, { capture: true, passive: false });
+
+function regionEdit(op) {
+  if (region.size === 0) { status('paint a region first (Shift+drag)', true); return; }
+  edit({ op, faces: [...region], amount: Number($('amount').value) });
+}
+
+// ---- the panel ----------------------------------------------------------------------
+$('alpha').addEventListener('input', () => { $('alpha-value').textContent = Number($('alpha').value).toFixed(2); });
+$('alpha').addEventListener('change', () => edit({ op: 'alpha', value: Number($('alpha').value) }));
+$('brush').addEventListener('input', () => { $('brush-value').textContent = Number($('brush').value).toFixed(3); });
+$('amount').addEventListener('input', () => { $('amount-value').textContent = Number($('amount').value).toFixed(2); });
+$('refine').addEventListener('click', () => regionEdit('refine'));
+$('coarsen').addEventListener('click', () => regionEdit('coarsen'));
+function clearRegion() { region.clear(); $('region-size').textContent = 0; colorFaces(); }
+$('clear-region').addEventListener('click', clearRegion);
+$('undo').addEventListener('click', () => edit({ op: 'undo' }));
+$('redo').addEventListener('click', () => edit({ op: 'redo' }));
+async function save() {
+  try {
+    const r = await api('/api/save', {});
+    status(`saved ${r.files.length} files and ${r.edits} edits into ${r.output_dir}`);
+  } catch (e) { status(`save: ${e.message}`, true); }
+}
+$('save').addEventListener('click', save);
+$('show-lines').addEventListener('change', () => { overlays.lines.visible = $('show-lines').checked; render(); });
+$('show-creases').addEventListener('change', () => { overlays.creases.visible = $('show-creases').checked; render(); });
+$('show-boundaries').addEventListener('change', loadBoundaries);
+$('smooth-boundaries').addEventListener('change', loadBoundaries);
+window.addEventListener('keydown', (event) => {
+  const ctrl = event.ctrlKey || event.metaKey;
+  if (ctrl && event.key.toLowerCase() === 'z') { event.preventDefault(); edit({ op: event.shiftKey ? 'redo' : 'undo' }); }
+  else if (ctrl && event.key.toLowerCase() === 'y') { event.preventDefault(); edit({ op: 'redo' }); }
+  else if (ctrl && event.key.toLowerCase() === 's') { event.preventDefault(); save(); }
+  else if (event.key === 'Escape') clearRegion();
+});
+
+// ---- start --------------------------------------------------------------------------
+async function start() {
+  $('brush-value').textContent = Number($('brush').value).toFixed(3);
+  $('amount-value').textContent = Number($('amount').value).toFixed(2);
+  status('loading the mesh ...');
+  const [m, s] = await Promise.all([api('/api/mesh'), api('/api/state')]);
+  $('mesh-name').textContent = `${s.triangles} triangles, ${s.vertices} vertices; ${s.feature_edges} feature edges, ${s.crease_edges} creases`;
+  buildMesh(m);
+  resize();
+  showState(s);
+  await loadLabels();
+  await loadFeatures();
+  await loadBoundaries();
+  status(`${s.patches} patches`);
+  state.ready = true;
+}
+start().catch((e) => status(`cannot load: ${e.message}`, true));

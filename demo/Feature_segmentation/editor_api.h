@@ -1,0 +1,402 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The JSON interface of the interactive editor (`feature_segmentation edit`), apart from
+// HTTP: an Editor_session holds one mesh through the Pipeline, turns each JSON edit into
+// the edit script's Script_edit and applies it with the script's Edit_runner (so an
+// edit means the same in a script and in the editor), keeps the session's history as a
+// script, and answers the page's queries as JSON. Thread-safe: every call takes the
+// session's lock, so edits run one at a time and a query never sees half an edit.
+//
+// Requests and answers (all JSON; face indices are triangles of the mesh as GET
+// /api/mesh gives it, which is the order of segmentation.ply):
+//   state      {"patches", "alpha", "cut_cost", "edits": [script lines], "can_undo",
+//               "can_redo", "last_edit": {"op", "seconds", "server_seconds"} or null,
+//               "vertices", "triangles", "feature_edges", "crease_edges"}
+//   mesh       {"vertices": [x y z ...], "triangles": [i j k ...], "diagonal"}
+//   labels     {"patches", "face_patches": [...], "vertex_patches": [...]}
+//   features   {"ridges", "valleys", "user": [[x y z ...] per line], "creases": [x y z x y z
+//               per crease edge ...]}
+//   boundaries {"curves": [[x y z ...] per curve, closed ones repeat their first point],
+//               "smoothed", "length"}
+//   edit       {"op": "alpha", "value": A} | {"op": "refine" or "coarsen", "faces": [...],
+//               "amount": D} | {"op": "scale", "faces": [...], "factor": F} |
+//               {"op": "merge", "faces": [...]} | {"op": "sketch", "points": [[x, y, z],
+//               ...], "alpha": A (optional, > 1)} | {"op": "undo"} | {"op": "redo"};
+//               answered with the new state
+// A request the editor cannot take (bad JSON, an unknown op or key, a missing or
+// non-finite number, a face index out of range, nothing to undo) throws Request_error
+// and changes nothing.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_API_H
+#define CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_API_H
+
+#include "edit_script.h"
+#include "pipeline.h"
+#include "program_options.h"
+
+#include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+#include <CGAL/Feature_segmentation/smooth_boundaries.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fs_demo {
+
+/// A request the editor refuses; the message says why. The state is unchanged.
+class Request_error : public std::runtime_error
+{
+public:
+  explicit Request_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+namespace internal {
+
+inline double json_finite(const nlohmann::json& j, const char* key, const std::string& op)
+{
+  const auto it = j.find(key);
+  if(it == j.end())
+    throw Request_error(op + ": '" + key + "' is missing");
+  if(!it->is_number())
+    throw Request_error(op + ": '" + key + "' must be a number");
+  const double x = it->get<double>();
+  if(!std::isfinite(x))
+    throw Request_error(op + ": '" + key + "' must be a finite number");
+  return x;
+}
+
+inline std::vector<std::size_t> json_faces(const nlohmann::json& j, const std::string& op,
+                                           std::size_t number_of_triangles)
+{
+  const auto it = j.find("faces");
+  if(it == j.end() || !it->is_array())
+    throw Request_error(op + ": 'faces' must be an array of triangle indices");
+  if(it->empty())
+    throw Request_error(op + ": 'faces' is empty");
+  std::vector<std::size_t> faces;
+  faces.reserve(it->size());
+  for(const nlohmann::json& f : *it)
+  {
+    if(!f.is_number_unsigned())
+      throw Request_error(op + ": 'faces' must hold integers >= 0 (got " + f.dump() + ")");
+    const auto i = f.get<std::uint64_t>();
+    if(i >= number_of_triangles)
+      throw Request_error(op + ": face index " + std::to_string(i) + " is out of range (the mesh has " +
+                          std::to_string(number_of_triangles) + " triangles)");
+    faces.push_back(static_cast<std::size_t>(i));
+  }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  return faces;
+}
+
+inline void json_keys(const nlohmann::json& j, const std::string& op, std::set<std::string> allowed)
+{
+  allowed.insert("op");
+  for(const auto& item : j.items())
+    if(!allowed.count(item.key()))
+      throw Request_error(op + ": unknown key '" + item.key() + "'");
+}
+
+} // namespace internal
+
+/// Turns one JSON edit into the edit script's form (its line is `line`).
+/// \throws Request_error if the request is not a valid edit
+inline Script_edit script_edit_from_json(const nlohmann::json& j, std::size_t number_of_triangles,
+                                         std::size_t line)
+{
+  if(!j.is_object())
+    throw Request_error("an edit must be a JSON object, e.g. {\"op\": \"alpha\", \"value\": 0.8}");
+  const auto op_it = j.find("op");
+  if(op_it == j.end() || !op_it->is_string())
+    throw Request_error("an edit needs \"op\": one of alpha, refine, coarsen, scale, merge, sketch, undo, redo");
+  Script_edit e;
+  e.line = line;
+  e.verb = op_it->get<std::string>();
+  const std::string& op = e.verb;
+  if(op == "alpha")
+  {
+    internal::json_keys(j, op, {"value"});
+    e.value = internal::json_finite(j, "value", op);
+  }
+  else if(op == "refine" || op == "coarsen" || op == "scale")
+  {
+    const char* key = op == "scale" ? "factor" : "amount";
+    internal::json_keys(j, op, {"faces", key});
+    e.region.kind = Script_region::TRIANGLES;
+    e.region.faces = internal::json_faces(j, op, number_of_triangles);
+    e.value = internal::json_finite(j, key, op);
+    if(op == "scale" && e.value < 0)
+      throw Request_error("scale: 'factor' must be >= 0");
+    if(op == "coarsen")
+      e.value = -e.value;
+  }
+  else if(op == "merge")
+  {
+    internal::json_keys(j, op, {"faces"});
+    e.region.kind = Script_region::TRIANGLES;
+    e.region.faces = internal::json_faces(j, op, number_of_triangles);
+  }
+  else if(op == "sketch")
+  {
+    internal::json_keys(j, op, {"points", "alpha"});
+    e.value = j.contains("alpha") ? internal::json_finite(j, "alpha", op) : default_sketch_alpha;
+    if(!(e.value > 1))
+      throw Request_error("sketch: 'alpha' must be > 1");
+    const auto it = j.find("points");
+    if(it == j.end() || !it->is_array() || it->size() < 2)
+      throw Request_error("sketch: 'points' must be an array of at least two [x, y, z] points");
+    for(const nlohmann::json& p : *it)
+    {
+      if(!p.is_array() || p.size() != 3)
+        throw Request_error("sketch: every point must be [x, y, z] (got " + p.dump() + ")");
+      std::array<double, 3> q;
+      for(int k = 0; k < 3; ++k)
+      {
+        if(!p[k].is_number() || !std::isfinite(p[k].get<double>()))
+          throw Request_error("sketch: coordinates must be finite numbers (got " + p.dump() + ")");
+        q[k] = p[k].get<double>();
+      }
+      e.points.push_back(q);
+    }
+  }
+  else if(op == "undo" || op == "redo")
+    internal::json_keys(j, op, {});
+  else
+    throw Request_error("unknown op '" + op + "' (expected alpha, refine, coarsen, scale, merge, sketch, undo or redo)");
+  return e;
+}
+
+/// One mesh in the editor: segmented at construction, then edited request by request.
+class Editor_session
+{
+public:
+  /// Reads and segments `options.input` (and applies `options.edits_file`, if given).
+  explicit Editor_session(const Options& options)
+    : m_options(options), m_timer(options.quiet), m_pipeline(m_options, m_timer, m_results)
+  {
+    Edit_script script;
+    if(!options.edits_file.empty())
+      script = read_edit_script(options.edits_file);
+    m_pipeline.load();
+    check_face_indices(script, m_results.read_report.number_of_file_faces, num_faces(m_pipeline.mesh));
+    m_pipeline.segment();
+    m_triangles.assign(faces(m_pipeline.mesh).begin(), faces(m_pipeline.mesh).end());
+    for(const Script_edit& e : script.edits)
+      record(m_pipeline.edit_runner().apply(script, e), e);
+  }
+
+  std::size_t number_of_triangles() const { return m_triangles.size(); }
+
+  nlohmann::json state() const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return state_unlocked();
+  }
+
+  /// Applies one edit and answers with the new state.
+  /// \throws Request_error if the edit is refused (nothing changes)
+  nlohmann::json edit(const nlohmann::json& request)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::lock_guard<std::mutex> lock(m_mutex);
+    Script_edit e = script_edit_from_json(request, m_triangles.size(), m_history.size() + 1);
+    Edit_script script;
+    script.path = "request";
+    Edit_record r;
+    try
+    {
+      r = m_pipeline.edit_runner().apply(script, e);
+    }
+    catch(const Edit_script_error& error)
+    {
+      // "request:LINE: verb: reason" -> "verb: reason"
+      std::string what = error.what();
+      const std::string prefix = internal::script_place(script.path, e.line);
+      if(what.rfind(prefix, 0) == 0) what.erase(0, prefix.size());
+      throw Request_error(what);
+    }
+    record(r, e);
+    m_last_server_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return state_unlocked();
+  }
+
+  std::string mesh() const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const Mesh& m = m_pipeline.mesh;
+    std::vector<double> xyz;
+    xyz.reserve(3 * num_vertices(m));
+    std::vector<std::size_t> index(m.number_of_vertices() + m.number_of_removed_vertices(), 0);
+    std::size_t n = 0;
+    for(Mesh::Vertex_index v : m.vertices())
+    {
+      index[v] = n++;
+      const K::Point_3& p = m.point(v);
+      xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    }
+    std::vector<std::size_t> tri;
+    tri.reserve(3 * m_triangles.size());
+    for(Mesh::Face_index f : m_triangles)
+      for(Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m))
+        tri.push_back(index[v]);
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(m);
+    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                      CGAL::square(box.zmax() - box.zmin()));
+    return nlohmann::json{{"vertices", xyz}, {"triangles", tri}, {"diagonal", diagonal}}.dump();
+  }
+
+  std::string labels() const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const Mesh& m = m_pipeline.mesh;
+    const auto& seg = *m_pipeline.segmentation;
+    std::vector<std::size_t> faces, vertices;
+    faces.reserve(m_triangles.size());
+    for(Mesh::Face_index f : m_triangles) faces.push_back(seg.patch(f));
+    for(Mesh::Vertex_index v : m.vertices()) vertices.push_back(seg.patch(v));
+    return nlohmann::json{{"patches", seg.number_of_patches()}, {"face_patches", faces}, {"vertex_patches", vertices}}
+      .dump();
+  }
+
+  std::string features() const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const auto& seg = *m_pipeline.segmentation;
+    const Mesh& wm = seg.working_mesh();
+    nlohmann::json ridges = nlohmann::json::array(), valleys = nlohmann::json::array(),
+                   user = nlohmann::json::array();
+    for(const auto& line : seg.feature_lines().lines)
+    {
+      std::vector<double> xyz;
+      for(const auto& p : line.points)
+      {
+        const K::Point_3 q = p.point(wm, get(CGAL::vertex_point, wm));
+        xyz.insert(xyz.end(), {q.x(), q.y(), q.z()});
+      }
+      if(line.is_closed && !line.points.empty()) xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3);
+      (line.type == FS::Feature_line_type::RIDGE ? ridges
+       : line.type == FS::Feature_line_type::VALLEY ? valleys : user).push_back(xyz);
+    }
+    const Mesh& m = m_pipeline.mesh;
+    std::vector<double> creases;
+    for(Mesh::Edge_index e : m.edges())
+      if(seg.is_crease_edge(e))
+        for(Mesh::Vertex_index v : {m.source(m.halfedge(e)), m.target(m.halfedge(e))})
+          creases.insert(creases.end(), {m.point(v).x(), m.point(v).y(), m.point(v).z()});
+    return nlohmann::json{{"ridges", ridges}, {"valleys", valleys}, {"user", user}, {"creases", creases}}.dump();
+  }
+
+  /// The patch boundaries, smoothed as the outputs are (`smooth`) or not.
+  std::string boundaries(bool smooth) const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    FS::Patch_boundaries<Mesh> b = m_pipeline.segmentation->patch_boundaries();
+    if(smooth)
+      FS::smooth_patch_boundaries(b, FS::parameters::smoothing_iterations(
+                                       m_options.smoothing_iterations ? *m_options.smoothing_iterations
+                                                                      : default_smoothing_iterations));
+    nlohmann::json curves = nlohmann::json::array();
+    for(const auto& c : b.curves())
+    {
+      std::vector<double> xyz;
+      for(const auto& p : c.points) xyz.insert(xyz.end(), p.point.begin(), p.point.end());
+      if(c.is_closed() && !c.points.empty()) xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3);
+      curves.push_back(xyz);
+    }
+    return nlohmann::json{{"curves", curves}, {"smoothed", smooth}, {"length", b.length()}}.dump();
+  }
+
+  /// Writes the outputs of the program and edits.txt into `--output-dir`.
+  nlohmann::json save()
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const std::filesystem::path dir(m_options.output_dir);
+    write_file(dir / "edits.txt", [&](std::ostream& os) {
+      os << "# feature_segmentation edit " << m_options.input << ": " << m_history.size()
+         << " edits; replay with --edits\n";
+      write_edit_script(os, m_history);
+    });
+    m_pipeline.write_outputs();
+    nlohmann::json files = nlohmann::json::array();
+    for(const char* f : {"segmentation.ply", "segmentation_refined.ply", "face_patches.txt", "vertex_patches.txt",
+                         "boundaries.polylines.txt", "feature_lines.polylines.txt", "feature_lines.obj",
+                         "summary.json", "edits.txt"})
+      files.push_back(f);
+    return nlohmann::json{{"output_dir", std::filesystem::absolute(dir).string()}, {"files", files},
+                          {"edits", m_history.size()}};
+  }
+
+private:
+  // The edit (of line e.line) went through: it joins the history that edits.txt replays.
+  void record(const Edit_record& r, Script_edit e)
+  {
+    e.line = m_history.size() + 1;
+    m_history.push_back(e);
+    m_results.edits.push_back(r);
+    m_results.edits.back().line = e.line;
+    m_last = r;
+    m_last_server_seconds = r.seconds + r.prepare_seconds;
+  }
+
+  nlohmann::json state_unlocked() const
+  {
+    const auto& seg = *m_pipeline.segmentation;
+    std::ostringstream script;
+    write_edit_script(script, m_history);
+    nlohmann::json lines = nlohmann::json::array();
+    std::istringstream in(script.str());
+    for(std::string line; std::getline(in, line);) lines.push_back(line);
+    nlohmann::json last = nullptr;
+    if(m_last)
+      last = {{"op", m_last->verb}, {"seconds", m_last->seconds}, {"prepare_seconds", m_last->prepare_seconds},
+              {"server_seconds", m_last_server_seconds}, {"patches", m_last->patches}};
+    return {{"patches", seg.number_of_patches()},
+            {"alpha", seg.alpha()},
+            {"cut_cost", seg.cut_cost()},
+            {"edits", lines},
+            {"can_undo", history_depths().first > 0},
+            {"can_redo", history_depths().second > 0},
+            {"last_edit", last},
+            {"vertices", num_vertices(m_pipeline.mesh)},
+            {"triangles", m_triangles.size()},
+            {"feature_edges", seg.number_of_feature_edges()},
+            {"crease_edges", seg.number_of_crease_edges()}};
+  }
+
+  // Whether the history has an edit that an undo would take back / a redo make again
+  // (replaying the history's undo and redo lines; edits that changed nothing count).
+  std::pair<std::size_t, std::size_t> history_depths() const
+  {
+    std::size_t undoable = 0, redoable = 0;
+    for(const Script_edit& e : m_history)
+    {
+      if(e.verb == "undo") { --undoable; ++redoable; }
+      else if(e.verb == "redo") { ++undoable; --redoable; }
+      else { ++undoable; redoable = 0; }
+    }
+    return {undoable, redoable};
+  }
+
+  Options m_options;
+  Stage_timer m_timer;
+  Results m_results;
+  mutable std::mutex m_mutex;
+  Pipeline m_pipeline;
+  std::vector<Mesh::Face_index> m_triangles;
+  std::vector<Script_edit> m_history;
+  std::optional<Edit_record> m_last;
+  double m_last_server_seconds = 0;
+};
+
+} // namespace fs_demo
+
+#endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_API_H

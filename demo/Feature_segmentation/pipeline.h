@@ -1,0 +1,561 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The stages of the program `feature_segmentation` that its subcommands share: the
+// timing of stages, reading the mesh and segmenting it (Pipeline), and the outputs
+// (boundaries, smoothing, refined mesh, patch files, summary.json).
+
+#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PIPELINE_H
+#define CGAL_FEATURE_SEGMENTATION_DEMO_PIPELINE_H
+
+#include "edit_script.h"
+#include "program_options.h"
+#include "read_input_mesh.h"
+#include "read_user_feature_lines.h"
+
+#include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+#include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/Greedy_additive_edge_contraction.h>
+#include <CGAL/Feature_segmentation/IO/write_boundaries.h>
+#include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
+#include <CGAL/Feature_segmentation/IO/write_segmentation.h>
+#include <CGAL/Feature_segmentation/Kernighan_lin_with_joins.h>
+#include <CGAL/Feature_segmentation/Solver_sequence.h>
+#include <CGAL/Feature_segmentation/Watershed_distance.h>
+#include <CGAL/Feature_segmentation/boundary_curves.h>
+#include <CGAL/Feature_segmentation/crest_lines.h>
+#include <CGAL/Feature_segmentation/face_patches.h>
+#include <CGAL/Feature_segmentation/input_checks.h>
+#include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/principal_curvatures.h>
+#include <CGAL/Feature_segmentation/smooth_boundaries.h>
+
+#include <CGAL/property_map.h>
+
+#include <boost/range/counting_range.hpp>
+
+#include <unistd.h> // getpid: names of temporary output files
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fs_demo {
+
+// Wall-clock seconds of each stage, in the order the stages ran.
+class Stage_timer
+{
+public:
+  explicit Stage_timer(bool quiet) : m_quiet(quiet) {}
+
+  template <typename F>
+  auto run(const std::string& name, F&& f)
+  {
+    if(!m_quiet)
+      std::cerr << "progress: " << name << " ..." << std::endl;
+    const auto start = std::chrono::steady_clock::now();
+    auto finish = [&]() {
+      const std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
+      // a stage run again (the editor saves more than once) keeps its place, new time
+      auto it = std::find_if(m_seconds.begin(), m_seconds.end(), [&](const auto& s) { return s.first == name; });
+      if(it != m_seconds.end()) it->second = d.count();
+      else m_seconds.emplace_back(name, d.count());
+      if(!m_quiet)
+        std::cerr << "progress: " << name << " done in " << std::fixed << std::setprecision(3)
+                  << d.count() << " s" << std::defaultfloat << std::endl;
+    };
+    if constexpr(std::is_void_v<decltype(f())>)
+    {
+      f();
+      finish();
+    }
+    else
+    {
+      auto result = f();
+      finish();
+      return result;
+    }
+  }
+
+  const std::vector<std::pair<std::string, double> >& seconds() const { return m_seconds; }
+
+  /// The last time of stage `name` (0 if it never ran).
+  double seconds_of(const std::string& name) const
+  {
+    for(const auto& s : m_seconds)
+      if(s.first == name) return s.second;
+    return 0;
+  }
+
+private:
+  bool m_quiet;
+  std::vector<std::pair<std::string, double> > m_seconds;
+};
+
+inline std::string json_string(const std::string& s)
+{
+  std::ostringstream os;
+  os << '"';
+  for(unsigned char c : s)
+  {
+    switch(c)
+    {
+      case '"': os << "\\\""; break;
+      case '\\': os << "\\\\"; break;
+      case '\n': os << "\\n"; break;
+      case '\t': os << "\\t"; break;
+      case '\r': os << "\\r"; break;
+      default:
+        if(c < 0x20)
+          os << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
+        else
+          os << c;
+    }
+  }
+  os << '"';
+  return os.str();
+}
+
+// `digits` significant digits; by default the fewest that read back as `x` (0.6, not
+// 0.59999999999999998), which is as deterministic as a fixed count.
+inline std::string json_number(double x, int digits = 0)
+{
+  std::ostringstream os;
+  if(digits > 0)
+  {
+    os << std::setprecision(digits) << x;
+    return os.str();
+  }
+  for(int d = 1;; ++d)
+  {
+    os.str(std::string());
+    os << std::setprecision(d) << x;
+    if(d >= std::numeric_limits<double>::max_digits10 ||
+       std::strtod(os.str().c_str(), nullptr) == x)
+      return os.str();
+  }
+}
+
+// The solver chosen with --solver, timed on its own: the segmentation stage also builds
+// the graph and its weights, and the summary reports both times.
+class Timed_solver
+{
+public:
+  Timed_solver(const std::string& name, double& seconds) : m_name(name), m_seconds(&seconds) {}
+
+  std::size_t operator()(const FS::Correlation_clustering_graph& g,
+                         std::vector<std::size_t>& labels) const
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t n = 0;
+    if(m_name == "gaec")
+      n = FS::Greedy_additive_edge_contraction()(g, labels);
+    else if(m_name == "klj")
+    {
+      labels.clear(); // from singletons
+      n = FS::Kernighan_lin_with_joins()(g, labels);
+    }
+    else
+      n = FS::Default_correlation_clustering_solver()(g, labels);
+    const std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
+    *m_seconds = d.count();
+    return n;
+  }
+
+private:
+  std::string m_name;
+  double* m_seconds; // the solver is copied by the segmentation: the time lives with the caller
+};
+
+struct Results
+{
+  fs_demo::Read_report read_report;
+  std::size_t number_of_vertices = 0;
+  std::size_t number_of_edges = 0;
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_feature_edges = 0;
+  std::size_t number_of_crease_edges = 0;
+  std::size_t number_of_ridges = 0;
+  std::size_t number_of_valleys = 0;
+  std::size_t number_of_user_lines = 0;
+  std::size_t number_of_lines = 0;
+  std::size_t number_of_patches = 0;       // after the edits
+  double cut_cost = 0;                     // after the edits
+  std::size_t number_of_automatic_patches = 0; // before the edits
+  double automatic_cut_cost = 0;           // before the edits
+  std::size_t number_of_oversegments = 0;
+  double solver_seconds = 0;               // of the automatic segmentation
+  std::vector<fs_demo::Edit_record> edits;
+  // The boundaries and their smoothing.
+  std::size_t number_of_curves = 0;
+  std::size_t number_of_junctions = 0;
+  std::size_t smoothing_iterations_run = 0;
+  std::size_t smoothing_vertex_moves = 0;
+  double length_before = 0, length_after = 0;
+  double anisotropic_length_before = 0, anisotropic_length_after = 0;
+  double smoothing_seconds = 0;
+  std::size_t number_of_refined_vertices = 0;
+  std::size_t number_of_refined_faces = 0;
+  std::size_t number_of_split_faces = 0;
+};
+
+inline void write_summary(std::ostream& os, const Options& options, const Results& r,
+                   const std::vector<std::pair<std::string, double> >& seconds)
+{
+  const double threshold = options.strength_threshold ? *options.strength_threshold
+                                                      : FS::default_strength_threshold;
+  os << "{\n"
+     << "  \"program\": \"" << program_name << "\",\n"
+     << "  \"input\": " << json_string(options.input) << ",\n"
+     << "  \"options\": {\n"
+     << "    \"rings\": " << options.rings << ",\n"
+     << "    \"radius\": " << json_number(options.radius) << ",\n"
+     << "    \"strength_threshold\": " << json_number(threshold) << ",\n"
+     << "    \"ridges\": " << (options.ridges ? "true" : "false") << ",\n"
+     << "    \"valleys\": " << (options.valleys ? "true" : "false") << ",\n"
+     << "    \"feature_edges_file\": "
+     << (options.feature_edges_file.empty() ? std::string("null")
+                                            : json_string(options.feature_edges_file)) << ",\n"
+     << "    \"alpha\": " << json_number(options.alpha) << ",\n"
+     << "    \"gamma\": " << json_number(options.gamma) << ",\n"
+     << "    \"crease_angle\": " << json_number(options.crease_angle) << ",\n"
+     << "    \"crease_filter\": " << options.crease_filter << ",\n"
+     << "    \"full_graph\": " << (options.full_graph ? "true" : "false") << ",\n"
+     << "    \"watershed\": " << json_string(options.watershed) << ",\n"
+     << "    \"edits_file\": "
+     << (options.edits_file.empty() ? std::string("null") : json_string(options.edits_file)) << ",\n"
+     << "    \"smoothing_iterations\": "
+     << (options.smoothing_iterations ? *options.smoothing_iterations : default_smoothing_iterations) << ",\n"
+     << "    \"solver\": " << json_string(options.solver) << "\n"
+     << "  },\n"
+     << "  \"input_file\": {\n"
+     << "    \"format\": " << json_string(r.read_report.format) << ",\n"
+     << "    \"vertices\": " << r.read_report.number_of_file_points << ",\n"
+     << "    \"faces\": " << r.read_report.number_of_file_faces << ",\n"
+     << "    \"removed_vertices\": " << r.read_report.number_of_merged_points << ",\n"
+     << "    \"removed_faces\": " << r.read_report.number_of_removed_faces << ",\n"
+     << "    \"duplicated_vertices\": " << r.read_report.number_of_duplicated_points << ",\n"
+     << "    \"triangulated_faces\": " << r.read_report.number_of_triangulated_faces << "\n"
+     << "  },\n"
+     << "  \"mesh\": {\n"
+     << "    \"vertices\": " << r.number_of_vertices << ",\n"
+     << "    \"edges\": " << r.number_of_edges << ",\n"
+     << "    \"faces\": " << r.number_of_faces << ",\n"
+     << "    \"border_edges\": " << r.read_report.number_of_border_edges << "\n"
+     << "  },\n"
+     << "  \"feature_lines\": {\n"
+     << "    \"total\": " << r.number_of_lines << ",\n"
+     << "    \"ridges\": " << r.number_of_ridges << ",\n"
+     << "    \"valleys\": " << r.number_of_valleys << ",\n"
+     << "    \"user\": " << r.number_of_user_lines << "\n"
+     << "  },\n"
+     << "  \"feature_edges\": " << r.number_of_feature_edges << ",\n"
+     << "  \"crease_edges\": " << r.number_of_crease_edges << ",\n"
+     << "  \"segmentation\": {\n"
+     << "    \"patches\": " << r.number_of_patches << ",\n"
+     << "    \"cut_cost\": " << json_number(r.cut_cost) << ",\n"
+     << "    \"automatic_patches\": " << r.number_of_automatic_patches << ",\n"
+     << "    \"automatic_cut_cost\": " << json_number(r.automatic_cut_cost) << ",\n"
+     << "    \"oversegments\": " << r.number_of_oversegments << ",\n"
+     << "    \"solver_seconds\": " << json_number(r.solver_seconds, 6) << "\n"
+     << "  },\n";
+  // One edit per line, so that a line-based tool reads them.
+  os << "  \"edits\": [";
+  for(std::size_t i = 0; i < r.edits.size(); ++i)
+  {
+    const fs_demo::Edit_record& e = r.edits[i];
+    os << (i == 0 ? "\n" : ",\n") << "    {\"line\": " << e.line << ", \"verb\": " << json_string(e.verb)
+       << ", \"patches\": " << e.patches << ", \"cut_cost\": " << json_number(e.cut_cost);
+    if(e.verb == "undo")
+      os << ", \"undone_line\": " << e.undone_line;
+    else if(e.verb == "redo")
+      os << ", \"redone_line\": " << e.redone_line;
+    else if(e.verb == "sketch")
+      os << ", \"points\": " << e.points;
+    else if(e.verb != "alpha")
+      os << ", \"faces\": " << e.faces;
+    os << ", \"seconds\": " << json_number(e.seconds, 6)
+       << ", \"solver_seconds\": " << json_number(e.solver_seconds, 6)
+       << ", \"prepare_seconds\": " << json_number(e.prepare_seconds, 6) << "}";
+  }
+  os << (r.edits.empty() ? "],\n" : "\n  ],\n")
+     << "  \"boundaries\": {\n"
+     << "    \"curves\": " << r.number_of_curves << ",\n"
+     << "    \"junctions\": " << r.number_of_junctions << ",\n"
+     << "    \"length_before\": " << json_number(r.length_before) << ",\n"
+     << "    \"length_after\": " << json_number(r.length_after) << ",\n"
+     << "    \"anisotropic_length_before\": " << json_number(r.anisotropic_length_before) << ",\n"
+     << "    \"anisotropic_length_after\": " << json_number(r.anisotropic_length_after) << ",\n"
+     << "    \"smoothing_iterations\": " << r.smoothing_iterations_run << ",\n"
+     << "    \"vertex_moves\": " << r.smoothing_vertex_moves << ",\n"
+     << "    \"smoothing_seconds\": " << json_number(r.smoothing_seconds, 6) << ",\n"
+     << "    \"refined_vertices\": " << r.number_of_refined_vertices << ",\n"
+     << "    \"refined_faces\": " << r.number_of_refined_faces << ",\n"
+     << "    \"split_faces\": " << r.number_of_split_faces << "\n"
+     << "  },\n"
+     << "  \"seconds\": {\n";
+  double total = 0;
+  for(const auto& s : seconds)
+  {
+    os << "    " << json_string(s.first) << ": " << json_number(s.second, 6) << ",\n";
+    total += s.second;
+  }
+  os << "    \"total\": " << json_number(total, 6) << "\n"
+     << "  }\n"
+     << "}\n";
+}
+
+// Writes a file through `write`, atomically: into a temporary file next to it, renamed
+// over `path` once complete, so that an interrupted run never leaves a half-written file
+// under the final name. Fails with a clear message when it cannot.
+template <typename Write>
+inline void write_file(const std::filesystem::path& path, Write&& write)
+{
+  std::filesystem::path temporary = path;
+  temporary += ".partial-" + std::to_string(static_cast<long long>(::getpid()));
+  try
+  {
+    std::ofstream out(temporary);
+    if(!out)
+      throw std::runtime_error(path.string() + ": cannot be opened for writing");
+    write(out);
+    out.close();
+    if(!out)
+      throw std::runtime_error(path.string() + ": write failed (disk full?)");
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if(ec)
+      throw std::runtime_error(path.string() + ": cannot be written (" + ec.message() + ")");
+  }
+  catch(...)
+  {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+}
+
+/// One mesh through the pipeline: read (`load()`), segmented (`segment()`), edited (the
+/// segmentation is public, and `edit_runner()` applies script edits to it), and written
+/// (`write_outputs()`). Shared by the subcommands `segment` and `edit`. Not copyable: the
+/// segmentation refers to the mesh.
+class Pipeline
+{
+public:
+  typedef FS::Feature_aligned_segmentation<Mesh> Segmentation;
+
+  Pipeline(const Options& options, Stage_timer& timer, Results& results)
+    : m_options(options), m_timer(timer), m_results(results)
+  {}
+  Pipeline(const Pipeline&) = delete;
+  Pipeline& operator=(const Pipeline&) = delete;
+
+  /// Reads the input mesh (stage "load").
+  /// \throws Input_error on a file that cannot be read or repaired
+  void load()
+  {
+    Results& results = m_results;
+    results.read_report = m_timer.run("load", [&]() {
+      return read_input_mesh(m_options.input, mesh, correspondence);
+    });
+    if(!m_options.quiet)
+      for(const std::string& notice : results.read_report.notices)
+        std::cerr << "notice: " << m_options.input << ": " << notice << '\n';
+    results.number_of_vertices = num_vertices(mesh);
+    results.number_of_edges = num_edges(mesh);
+    results.number_of_faces = num_faces(mesh);
+    if(!m_options.quiet)
+      std::cerr << "mesh: " << results.number_of_vertices << " vertices, "
+                << results.number_of_faces << " faces" << std::endl;
+  }
+
+  /// Runs the automatic segmentation (stages "curvature" and "feature_lines" with
+  /// --feature-edges, then "segmentation").
+  void segment()
+  {
+    const Options& options = m_options;
+    Results& results = m_results;
+    Stage_timer& timer = m_timer;
+    // The segmentation class detects the curvature and the crest lines itself, on the
+    // mesh cut open along its creases (working_mesh()), where the fits see one side of a
+    // crease at a time. User feature lines (--feature-edges) are located on the input mesh
+    // and added to the lines detected there, as before creases existed.
+    const auto common = FS::parameters::alpha(options.alpha)
+                          .gamma(options.gamma)
+                          .crease_angle(options.crease_angle)
+                          .crease_filter_iterations(options.crease_filter)
+                          .neighborhood_rings(options.rings)
+                          .neighborhood_radius(options.radius)
+                          .strength_threshold(options.strength_threshold ? *options.strength_threshold
+                                                                         : FS::default_strength_threshold)
+                          .detect_ridges(options.ridges)
+                          .detect_valleys(options.valleys)
+                          .solver(Timed_solver(options.solver, last_solver_seconds))
+                          .use_oversegmentation(!options.full_graph)
+                          .watershed_distance(options.watershed == "geodesic" ? FS::Watershed_distance::GEODESIC
+                                                                              : FS::Watershed_distance::ANISOTROPIC);
+    if(!options.feature_edges_file.empty())
+    {
+      auto curvature_map =
+        mesh.add_property_map<Mesh::Vertex_index, FS::Principal_curvatures<K> >("v:fs_principal_curvatures").first;
+      timer.run("curvature", [&]() {
+        FS::estimate_principal_curvatures(mesh, curvature_map, FS::parameters::neighborhood_rings(options.rings).neighborhood_radius(options.radius));
+      });
+      FS::Feature_lines<Mesh> lines = timer.run("feature_lines", [&]() {
+        FS::Feature_lines<Mesh> detected;
+        if(options.ridges || options.valleys)
+          detected = FS::detect_crest_lines(
+            mesh, curvature_map,
+            FS::parameters::strength_threshold(options.strength_threshold ? *options.strength_threshold
+                                                                          : FS::default_strength_threshold)
+              .detect_ridges(options.ridges)
+              .detect_valleys(options.valleys));
+        results.number_of_user_lines = fs_demo::read_user_feature_lines(options.feature_edges_file, mesh, detected);
+        return detected;
+      });
+      timer.run("segmentation", [&]() {
+        segmentation.emplace(mesh, common.principal_curvature_map(curvature_map).feature_lines(std::cref(lines)));
+      });
+    }
+    else
+      timer.run("segmentation", [&]() { segmentation.emplace(mesh, common); });
+    const FS::Feature_lines<Mesh>& lines = segmentation->feature_lines();
+    results.number_of_ridges = lines.number_of_lines(FS::Feature_line_type::RIDGE);
+    results.number_of_valleys = lines.number_of_lines(FS::Feature_line_type::VALLEY);
+    results.number_of_lines = lines.lines.size();
+    results.number_of_feature_edges = segmentation->number_of_feature_edges();
+    results.number_of_crease_edges = segmentation->number_of_crease_edges();
+    if(!options.quiet)
+      std::cerr << "feature lines: " << results.number_of_ridges << " ridges, "
+                << results.number_of_valleys << " valleys, " << results.number_of_user_lines
+                << " user; " << results.number_of_crease_edges << " crease edges; "
+                << results.number_of_feature_edges << " feature edges" << std::endl;
+    results.solver_seconds = last_solver_seconds;
+    results.number_of_automatic_patches = results.number_of_patches = segmentation->number_of_patches();
+    results.automatic_cut_cost = results.cut_cost = segmentation->cut_cost();
+    results.number_of_oversegments = segmentation->number_of_oversegments();
+    if(!options.quiet)
+      std::cerr << "segmentation: " << results.number_of_patches << " patches, cut cost "
+                << results.cut_cost << ", " << results.number_of_oversegments << " oversegments"
+                << " (solver " << options.solver << ": " << std::fixed << std::setprecision(3)
+                << results.solver_seconds << " s)" << std::defaultfloat << std::endl;
+  }
+
+  /// Applies script edits to the segmentation, timing each.
+  Edit_runner<Mesh, K>& edit_runner()
+  {
+    if(!m_runner) m_runner = std::make_unique<Edit_runner<Mesh, K> >(mesh, correspondence, *segmentation, last_solver_seconds);
+    return *m_runner;
+  }
+
+  /// Writes every output of the current segmentation into `options.output_dir` (stages
+  /// "boundaries", "smoothing", "refinement", "write"), summary.json last.
+  void write_outputs()
+  {
+    const Options& options = m_options;
+    Results& results = m_results;
+    Stage_timer& timer = m_timer;
+    namespace sfs = std::filesystem;
+    std::error_code ec;
+    const FS::Feature_lines<Mesh>& lines = segmentation->feature_lines();
+    const Mesh& working_mesh = segmentation->working_mesh();
+    auto vertex_patch = mesh.add_property_map<Mesh::Vertex_index, long>("v:fs_patch", -1).first;
+    auto face_patch = mesh.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
+    segmentation->vertex_patches(vertex_patch);
+    segmentation->face_patches(face_patch);
+
+    // The patch of every point and face of the input file, in file order (-1: a point no
+    // face uses).
+    std::vector<long> file_vertex_patch, file_face_patch;
+    for(Mesh::Vertex_index v : correspondence.vertex_of_file_point)
+      file_vertex_patch.push_back(v == Mesh::null_vertex() ? -1L : get(vertex_patch, v));
+    for(Mesh::Face_index f : correspondence.face_of_file_face)
+      file_face_patch.push_back(get(face_patch, f));
+
+    // The boundaries of the final patches, in the metric of the weights, from the
+    // segmentation's own precomputation (which knows the sketches' feature points).
+    FS::Patch_boundaries<Mesh> boundaries =
+      timer.run("boundaries", [&]() { return segmentation->patch_boundaries(); });
+    results.number_of_curves = boundaries.curves().size();
+    results.number_of_junctions = boundaries.number_of_junctions();
+    results.length_before = boundaries.length();
+    results.anisotropic_length_before = boundaries.anisotropic_length();
+    const FS::Boundary_smoothing_report smoothing = timer.run("smoothing", [&]() {
+      return options.smoothing_iterations
+               ? FS::smooth_patch_boundaries(
+                   boundaries, FS::parameters::smoothing_iterations(*options.smoothing_iterations))
+               : FS::smooth_patch_boundaries(boundaries);
+    });
+    results.smoothing_seconds = timer.seconds_of("smoothing");
+    results.smoothing_iterations_run = smoothing.number_of_iterations;
+    results.smoothing_vertex_moves = smoothing.number_of_vertex_moves;
+    results.length_after = boundaries.length();
+    results.anisotropic_length_after = boundaries.anisotropic_length();
+    if(!options.quiet)
+      std::cerr << "boundaries: " << results.number_of_curves << " curves, length "
+                << results.length_before << " -> " << results.length_after << " ("
+                << results.smoothing_iterations_run << " smoothing iterations)" << std::endl;
+
+    Mesh refined;
+    auto refined_patch = refined.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
+    results.number_of_split_faces = timer.run("refinement", [&]() {
+      return FS::refine_mesh_along_boundaries(boundaries, refined, refined_patch);
+    });
+    results.number_of_refined_vertices = num_vertices(refined);
+    results.number_of_refined_faces = num_faces(refined);
+
+    results.number_of_patches = segmentation->number_of_patches();
+    results.cut_cost = segmentation->cut_cost();
+    const sfs::path dir(options.output_dir);
+    // summary.json marks a complete set of outputs: a previous run's goes first, and the
+    // new one is written last.
+    sfs::remove(dir / "summary.json", ec);
+    timer.run("write", [&]() {
+      write_file(dir / "feature_lines.polylines.txt",
+                 [&](std::ostream& os) { FS::write_polylines(os, working_mesh, lines); });
+      write_file(dir / "feature_lines.obj",
+                 [&](std::ostream& os) { FS::write_OBJ_lines(os, working_mesh, lines); });
+      write_file(dir / "segmentation.ply",
+                 [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); });
+      write_file(dir / "boundaries.polylines.txt",
+                 [&](std::ostream& os) { FS::write_boundary_polylines(os, boundaries); });
+      write_file(dir / "segmentation_refined.ply",
+                 [&](std::ostream& os) { FS::write_PLY_segmentation(os, refined, refined_patch); });
+      write_file(dir / "face_patches.txt", [&](std::ostream& os) {
+        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file_face_patch.size()),
+                            CGAL::make_property_map(file_face_patch));
+      });
+      write_file(dir / "vertex_patches.txt", [&](std::ostream& os) {
+        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file_vertex_patch.size()),
+                            CGAL::make_property_map(file_vertex_patch));
+      });
+    });
+    // Written last, so that it holds the time of every stage.
+    write_file(dir / "summary.json",
+               [&](std::ostream& os) { write_summary(os, options, results, timer.seconds()); });
+  }
+
+  Mesh mesh;                                   ///< the input, repaired and triangulated
+  Input_correspondence<Mesh> correspondence;   ///< input file <-> mesh
+  std::optional<Segmentation> segmentation;    ///< after segment()
+  double last_solver_seconds = 0;              ///< written by the solver at each solve
+
+private:
+  const Options& m_options;
+  Stage_timer& m_timer;
+  Results& m_results;
+  std::unique_ptr<Edit_runner<Mesh, K> > m_runner;
+};
+
+} // namespace fs_demo
+
+#endif // CGAL_FEATURE_SEGMENTATION_DEMO_PIPELINE_H

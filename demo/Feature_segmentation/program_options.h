@@ -1,0 +1,404 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The options of the program `feature_segmentation`: one struct, read once from the
+// command line (subcommands `segment`, the default, and `edit`), and the --help text.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
+#define CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Feature_segmentation/crest_lines.h>
+#include <CGAL/Feature_segmentation/principal_curvatures.h>
+#include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace fs_demo {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace FS = CGAL::Feature_segmentation;
+
+inline const char* const program_name = "feature_segmentation";
+
+// smooth_patch_boundaries()'s default number of iterations, for --help and the summary
+// (the program passes the option to the library only when it is given).
+inline const int default_smoothing_iterations = 20;
+
+// A wrong command line: reported with exit status 2, as getopt-style programs do.
+class Usage_error : public std::runtime_error
+{
+public:
+  explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+// The subcommand: `segment` (the default) writes the outputs; `edit` serves the editor.
+enum class Command { SEGMENT, EDIT };
+
+struct Options
+{
+  Command command = Command::SEGMENT;
+  // edit: the address and port the editor's server listens on (0: a free port), and the
+  // folder of its web page (empty: the one built next to the program).
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  std::string web_root;
+  std::string input = std::string(FS_MESH_DIR) + "/fandisk.off";
+  std::string output_dir = "feature_segmentation_output";
+  int rings = 2;
+  double radius = FS::default_neighborhood_radius;
+  std::optional<double> strength_threshold; // unset: the library's default
+  bool ridges = true;
+  bool valleys = true;
+  std::string feature_edges_file;           // empty: none
+  // The library's defaults for alpha and gamma (segment_along_features()).
+  double alpha = 0.6;
+  double gamma = 0.05;
+  double crease_angle = CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle;
+  // most rounds of normal filtering before creases: the library's default
+  int crease_filter = CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations;
+  std::string solver = "gaec+klj";
+  bool full_graph = false;
+  std::string watershed = "anisotropic";
+  std::string edits_file;                   // empty: no edits
+  std::optional<int> smoothing_iterations;  // unset: the library's default
+  bool quiet = false;
+  bool help = false;
+};
+
+inline void print_usage(std::ostream& os)
+{
+  os << "Usage: " << program_name << " [segment] [MESH] [--output-dir DIR] [options]\n"
+     << "       " << program_name << " edit [MESH] [--port N] [--host H] [--output-dir DIR] [options]\n"
+     << "\n"
+     << "edit: segments MESH, then serves the interactive editor, a web page, at\n"
+     << "http://H:N/ (default http://127.0.0.1:8080/; only this machine can reach it\n"
+     << "unless --host names another address); its Save button writes the outputs below\n"
+     << "and DIR/edits.txt, the edit script that replays the session with --edits.\n"
+     << "Stop it with Ctrl+C.\n"
+     << "\n"
+     << "Detects the feature lines (ridges and valleys) of a triangle mesh and writes\n"
+     << "  DIR/feature_lines.polylines.txt  CGAL polylines, one feature line per line of text\n"
+     << "  DIR/feature_lines.obj            the same lines as OBJ line elements\n"
+     << "and segments it into patches bounded by them (correlation clustering), writing\n"
+     << "  DIR/segmentation.ply             the mesh (triangulated, repaired) with a patch_id\n"
+     << "                                   and a red, green, blue colour per face\n"
+     << "  DIR/face_patches.txt             the patch of every face of MESH, one per line\n"
+     << "  DIR/vertex_patches.txt           the patch of every vertex of MESH, one per line\n"
+     << "  DIR/boundaries.polylines.txt     the boundaries between the patches, smoothed:\n"
+     << "                                   CGAL polylines, one curve per line of text\n"
+     << "  DIR/segmentation_refined.ply     the mesh refined along the smoothed boundaries,\n"
+     << "                                   every face in one patch (patch_id and colour)\n"
+     << "  DIR/summary.json                 mesh and feature counts, patches, cut cost,\n"
+     << "                                   oversegments, seconds per stage, and for each\n"
+     << "                                   edit of --edits its patches, cut cost, seconds;\n"
+     << "                                   boundary curves and lengths before and after\n"
+     << "                                   the smoothing\n"
+     << "\n"
+     << "MESH is an .off, .obj, .ply or .stl file (default: " << FS_MESH_DIR << "/fandisk.off).\n"
+     << "Quads and polygons are triangulated, duplicate points and faces removed, with a\n"
+     << "notice on stderr.\n"
+     << "\n"
+     << "Patch files follow the input file's order: line i is the patch of its i-th vertex\n"
+     << "(or face). Patches are numbered from 0. A face has the patch of the majority of\n"
+     << "its three vertices (the smallest of the three when all differ); a quad or polygon\n"
+     << "that was triangulated has the patch of its first triangle. A duplicate vertex\n"
+     << "(same position as an earlier one) or duplicate face (same vertices as an earlier\n"
+     << "one) has the patch of that earlier one; a pinched (non-manifold) vertex, split\n"
+     << "into copies to repair it, has the patch of the copy in the first face (in file\n"
+     << "order) that uses it; a vertex that no face uses has -1. For STL, the vertices are\n"
+     << "the distinct points in order of first appearance.\n"
+     << "\n"
+     << "The boundaries are the curves between the patches of the vertices (through the\n"
+     << "triangles whose vertices lie in different patches), smoothed in the metric of the\n"
+     << "edge weights so that they settle on the features and straighten elsewhere; the\n"
+     << "smoothing may move a vertex next to a boundary to the neighbouring patch, which\n"
+     << "segmentation_refined.ply shows (its vertices are the mesh's, then the new ones).\n"
+     << "The patch files and segmentation.ply keep the clustering's patches.\n"
+     << "\n"
+     << "Options:\n"
+     << "  --output-dir DIR          output folder, created if needed\n"
+     << "                            (default: ./feature_segmentation_output)\n"
+     << "  --rings N                 curvature neighbourhood in rings, integer >= 1 (default: 2)\n"
+     << "  --radius X                and beyond the rings, the vertices within X times the\n"
+     << "                            bounding box diagonal (normals within 30 degrees);\n"
+     << "                            0 <= X <= 1, 0: rings only (default: "
+     << FS::default_neighborhood_radius << ")\n"
+     << "  --strength-threshold X    drop feature lines weaker than X, X >= 0\n"
+     << "                            (default: " << FS::default_strength_threshold << ")\n"
+     << "  --no-ridges               do not detect ridges\n"
+     << "  --no-valleys              do not detect valleys\n"
+     << "  --feature-edges FILE      add user feature lines: a CGAL polylines file whose\n"
+     << "                            points are mesh vertices and segments mesh edges\n"
+     << "  --alpha X                 weight of the feature lines, any finite number; larger\n"
+     << "                            gives more patches, useful range 0.5 to 1 (default: 0.6)\n"
+     << "  --gamma X                 anisotropy of the metric, X >= 0 (default: 0.05)\n"
+     << "  --crease-angle D          edges whose faces bend by D degrees or more are creases:\n"
+     << "                            the mesh is cut open along them and their sides tied by\n"
+     << "                            crease weights (a gap test keeps strong bends of smooth\n"
+     << "                            surfaces out); 180 or more: none (with --radius 0,\n"
+     << "                            the paper's method)\n"
+     << "                            (default: "
+     << CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle << ")\n"
+     << "  --crease-filter N         rounds of bilateral filtering of the face normals\n"
+     << "                            before the creases are found; none on clean meshes;\n"
+     << "                            0: raw dihedral angles (default: "
+     << CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations << ")\n"
+     << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
+     << "                            edge contraction, then Kernighan-Lin with joins),\n"
+     << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"
+     << "  --full-graph              cluster the full vertex graph, not the reduced graph G'\n"
+     << "                            of the watershed oversegmentation (slower)\n"
+     << "  --watershed NAME          distance of the watershed oversegmentation: anisotropic\n"
+     << "                            (the paper's) or geodesic (default: anisotropic)\n"
+     << "  --edits FILE              apply the edit script FILE (below) after the automatic\n"
+     << "                            segmentation; the patch outputs are the edited result\n"
+     << "  --smoothing-iterations N  iterations of the boundary smoothing, integer >= 0; 0\n"
+     << "                            writes the boundaries unsmoothed (default: "
+     << default_smoothing_iterations << ")\n"
+     << "  --quiet                   no progress or notice lines on stderr (by default every\n"
+     << "                            stage prints 'progress: STAGE ...' when it starts and\n"
+     << "                            'progress: STAGE done in X s' when it ends)\n"
+     << "  --port N                  edit: the port to listen on, 0 .. 65535; 0 picks a free\n"
+     << "                            one (default: 8080)\n"
+     << "  --host H                  edit: the address to listen on (default: 127.0.0.1;\n"
+     << "                            0.0.0.0 opens the editor to the network)\n"
+     << "  --web-root DIR            edit: the folder of the editor's page (default: the\n"
+     << "                            one installed with the program)\n"
+     << "  --help                    print this help and exit\n"
+     << "\n"
+     << "Edit scripts (--edits FILE): one edit per line, applied in order; '#' starts a\n"
+     << "comment, blank lines are ignored. Numbers are decimal, finite.\n"
+     << "  alpha A                   global refine/coarsen: set alpha to A (the alpha_e of\n"
+     << "                            every feature edge moves by A - alpha)\n"
+     << "  refine REGION D           local refine: add D to alpha_e on the feature edges\n"
+     << "                            of REGION, re-solve the patches it touches\n"
+     << "  coarsen REGION D          local coarsen: subtract D from those alpha_e\n"
+     << "  scale REGION F            multiply those alpha_e by F >= 0\n"
+     << "  merge REGION              merge the patches that REGION touches (kept by later\n"
+     << "                            solves)\n"
+     << "  sketch [alpha A] X Y Z X Y Z ...\n"
+     << "                            a sketched feature line through two points or more,\n"
+     << "                            each moved to the nearest point of the surface; the\n"
+     << "                            edges it crosses get alpha_e >= A > 1 (default: 2)\n"
+     << "  undo                      take back the last edit not yet undone\n"
+     << "REGION is 'ball X Y Z R' (the faces whose centroid lies within R > 0 of X Y Z) or\n"
+     << "'faces I J ...' (faces of MESH numbered from 0 in file order, as in\n"
+     << "face_patches.txt; a triangulated polygon stands for all its triangles). A region\n"
+     << "without faces, or a merge inside one patch, changes nothing. A mistake in the\n"
+     << "script gives 'error: FILE:LINE: reason' and exit status 1 before the\n"
+     << "segmentation runs or anything is written. summary.json lists every edit\n"
+     << "(\"edits\"): its line, verb, the patches and cut cost after it, and its seconds\n"
+     << "(the library's re-weighting and re-solve; finding the region's faces or locating\n"
+     << "the sketch's points apart, as prepare_seconds).\n";
+}
+
+// Strict number parsing: the whole argument must be the number ("1.5x", "", "abc",
+// "nan" and out-of-range values are refused).
+inline int parse_int(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  long value = 0;
+  try
+  {
+    value = std::stol(text, &used, 10);
+  }
+  catch(const std::exception&)
+  {
+    throw Usage_error(option + " expects an integer (got '" + text + "')");
+  }
+  if(used != text.size() || std::isspace(static_cast<unsigned char>(text[0])))
+    throw Usage_error(option + " expects an integer (got '" + text + "')");
+  if(value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+    throw Usage_error(option + " is out of range (got '" + text + "')");
+  return static_cast<int>(value);
+}
+
+inline double parse_double(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  double value = 0;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch(const std::exception&)
+  {
+    throw Usage_error(option + " expects a number (got '" + text + "')");
+  }
+  if(used != text.size() || std::isspace(static_cast<unsigned char>(text[0])))
+    throw Usage_error(option + " expects a number (got '" + text + "')");
+  if(!std::isfinite(value))
+    throw Usage_error(option + " expects a finite number (got '" + text + "')");
+  return value;
+}
+
+inline Options parse_command_line(int argc, char** argv)
+{
+  Options options;
+  bool has_input = false;
+  bool has_watershed = false;
+  int first = 1;
+  if(argc > 1 && std::string(argv[1]) == "edit") { options.command = Command::EDIT; first = 2; }
+  else if(argc > 1 && std::string(argv[1]) == "segment") first = 2;
+  const bool editing = options.command == Command::EDIT;
+  for(int i = first; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    std::string value;
+    bool has_inline_value = false;
+    if(arg.rfind("--", 0) == 0)
+    {
+      const std::size_t eq = arg.find('=');
+      if(eq != std::string::npos)
+      {
+        value = arg.substr(eq + 1);
+        arg = arg.substr(0, eq);
+        has_inline_value = true;
+      }
+    }
+    auto take_value = [&]() -> std::string {
+      if(has_inline_value)
+        return value;
+      // "--rings --quiet" is a forgotten value, not a folder or number named "--quiet".
+      if(i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
+        throw Usage_error(arg + " expects a value");
+      return argv[++i];
+    };
+    auto refuse_value = [&]() {
+      if(has_inline_value)
+        throw Usage_error(arg + " takes no value");
+    };
+
+    if(arg == "--help" || arg == "-h") { refuse_value(); options.help = true; }
+    else if(arg == "--quiet") { refuse_value(); options.quiet = true; }
+    else if(arg == "--no-ridges") { refuse_value(); options.ridges = false; }
+    else if(arg == "--no-valleys") { refuse_value(); options.valleys = false; }
+    else if(arg == "--output-dir")
+    {
+      options.output_dir = take_value();
+      if(options.output_dir.empty())
+        throw Usage_error("--output-dir expects a non-empty folder name");
+    }
+    else if(arg == "--rings")
+    {
+      options.rings = parse_int(arg, take_value());
+      if(options.rings < 1)
+        throw Usage_error("--rings must be an integer >= 1 (got " +
+                          std::to_string(options.rings) + ")");
+    }
+    else if(arg == "--radius")
+    {
+      const std::string text = take_value();
+      options.radius = parse_double(arg, text);
+      if(!(options.radius >= 0) || !(options.radius <= 1))
+        throw Usage_error("--radius must be a number in [0, 1] (got " + text + ")");
+    }
+    else if(arg == "--strength-threshold")
+    {
+      const std::string text = take_value();
+      const double x = parse_double(arg, text);
+      if(x < 0)
+        throw Usage_error("--strength-threshold must be >= 0 (got '" + text + "')");
+      options.strength_threshold = x;
+    }
+    else if(arg == "--feature-edges")
+    {
+      options.feature_edges_file = take_value();
+      if(options.feature_edges_file.empty())
+        throw Usage_error("--feature-edges expects a file name");
+    }
+    else if(arg == "--alpha")
+      options.alpha = parse_double(arg, take_value());
+    else if(arg == "--gamma")
+    {
+      const std::string text = take_value();
+      options.gamma = parse_double(arg, text);
+      if(options.gamma < 0)
+        throw Usage_error("--gamma must be >= 0 (got '" + text + "')");
+    }
+    else if(arg == "--crease-angle")
+    {
+      const std::string text = take_value();
+      options.crease_angle = parse_double(arg, text);
+      if(!(options.crease_angle > 0))
+        throw Usage_error("--crease-angle must be > 0 degrees (got '" + text + "')");
+    }
+    else if(arg == "--crease-filter")
+    {
+      const std::string text = take_value();
+      options.crease_filter = parse_int(arg, text);
+      if(options.crease_filter < 0 || options.crease_filter > 1000)
+        throw Usage_error("--crease-filter must be an integer in 0 .. 1000 (got '" + text + "')");
+    }
+    else if(arg == "--solver")
+    {
+      options.solver = take_value();
+      if(options.solver != "gaec+klj" && options.solver != "gaec" && options.solver != "klj")
+        throw Usage_error("--solver must be gaec+klj, gaec or klj (got '" + options.solver + "')");
+    }
+    else if(arg == "--full-graph") { refuse_value(); options.full_graph = true; }
+    else if(arg == "--smoothing-iterations")
+    {
+      const int n = parse_int(arg, take_value());
+      if(n < 0)
+        throw Usage_error("--smoothing-iterations must be an integer >= 0 (got " + std::to_string(n) + ")");
+      options.smoothing_iterations = n;
+    }
+    else if(arg == "--watershed")
+    {
+      options.watershed = take_value();
+      has_watershed = true;
+      if(options.watershed != "anisotropic" && options.watershed != "geodesic")
+        throw Usage_error("--watershed must be anisotropic or geodesic (got '" + options.watershed + "')");
+    }
+    else if(arg == "--edits")
+    {
+      options.edits_file = take_value();
+      if(options.edits_file.empty())
+        throw Usage_error("--edits expects a file name");
+    }
+    else if(arg == "--port" || arg == "--host" || arg == "--web-root")
+    {
+      if(!editing)
+        throw Usage_error(arg + " is an option of 'edit' (" + program_name + " edit MESH " + arg + " ...)");
+      const std::string text = take_value();
+      if(arg == "--port")
+      {
+        options.port = parse_int(arg, text);
+        if(options.port < 0 || options.port > 65535)
+          throw Usage_error("--port must be an integer in 0 .. 65535 (got " + text + ")");
+      }
+      else if(text.empty())
+        throw Usage_error(arg + " expects a non-empty value");
+      else if(arg == "--host")
+        options.host = text;
+      else
+        options.web_root = text;
+    }
+    else if(arg.size() > 1 && arg[0] == '-')
+      throw Usage_error("unknown option '" + arg + "' (see --help)");
+    else
+    {
+      if(has_input)
+        throw Usage_error("more than one input mesh ('" + options.input + "' and '" + arg + "')");
+      options.input = arg;
+      has_input = true;
+    }
+  }
+  if(!options.ridges && !options.valleys && !options.quiet && !options.help)
+    std::cerr << "notice: --no-ridges and --no-valleys: no crest lines will be detected\n";
+  if(options.full_graph && has_watershed && !options.quiet && !options.help)
+    std::cerr << "notice: --full-graph: no oversegmentation, --watershed has no effect\n";
+  return options;
+}
+
+} // namespace fs_demo
+
+#endif // CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
