@@ -9,6 +9,9 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -58,6 +61,36 @@ inline std::string cpu_name()
         return line.substr(colon + 2);
     }
   return "unknown";
+}
+
+typedef std::array<double, 3> Soup_point;
+typedef std::array<std::uint32_t, 3> Soup_triangle;
+
+// Flat midpoint subdivision: each triangle into 4, the geometry unchanged.
+inline void subdivide(std::vector<Soup_point>& points, std::vector<Soup_triangle>& triangles)
+{
+  std::unordered_map<std::uint64_t, std::uint32_t> middle;
+  const auto mid = [&](std::uint32_t a, std::uint32_t b) {
+    const std::uint64_t key = (std::uint64_t((std::min)(a, b)) << 32) | (std::max)(a, b);
+    const auto it = middle.find(key);
+    if(it != middle.end())
+      return it->second;
+    const Soup_point& p = points[a];
+    const Soup_point& q = points[b];
+    points.push_back({{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2}});
+    return middle[key] = static_cast<std::uint32_t>(points.size() - 1);
+  };
+  std::vector<Soup_triangle> out;
+  out.reserve(4 * triangles.size());
+  for(const Soup_triangle& t : triangles)
+  {
+    const std::uint32_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+    out.push_back({{t[0], ab, ca}});
+    out.push_back({{ab, t[1], bc}});
+    out.push_back({{ca, bc, t[2]}});
+    out.push_back({{ab, bc, ca}});
+  }
+  triangles.swap(out);
 }
 
 // Reads a triangle mesh; on failure, `error` says why.

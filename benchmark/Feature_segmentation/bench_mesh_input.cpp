@@ -31,36 +31,11 @@
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-typedef std::array<double, 3> P;
-typedef std::array<std::uint32_t, 3> T;
+typedef fs_bench::Soup_point P;
+typedef fs_bench::Soup_triangle T;
+using fs_bench::subdivide;
 
 namespace {
-
-void subdivide(std::vector<P>& points, std::vector<T>& triangles)
-{
-  std::unordered_map<std::uint64_t, std::uint32_t> middle;
-  const auto mid = [&](std::uint32_t a, std::uint32_t b) {
-    const std::uint64_t key = (std::uint64_t((std::min)(a, b)) << 32) | (std::max)(a, b);
-    const auto it = middle.find(key);
-    if(it != middle.end())
-      return it->second;
-    const P& p = points[a];
-    const P& q = points[b];
-    points.push_back({{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2}});
-    return middle[key] = static_cast<std::uint32_t>(points.size() - 1);
-  };
-  std::vector<T> out;
-  out.reserve(4 * triangles.size());
-  for(const T& t : triangles)
-  {
-    const std::uint32_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-    out.push_back({{t[0], ab, ca}});
-    out.push_back({{ab, t[1], bc}});
-    out.push_back({{ca, bc, t[2]}});
-    out.push_back({{ab, bc, ca}});
-  }
-  triangles.swap(out);
-}
 
 void write_files(const std::string& stem, const std::vector<P>& points, const std::vector<T>& triangles)
 {

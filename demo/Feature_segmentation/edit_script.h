@@ -43,6 +43,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -300,11 +301,23 @@ inline void check_face_indices(const Edit_script& script, std::size_t number_of_
   }
 }
 
+namespace internal {
+
+// The shortest text that reads back as `x` (0.85, not 0.84999999999999998).
+inline std::string script_number_text(double x)
+{
+  char buffer[32];
+  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, r.ptr);
+}
+
+} // namespace internal
+
 /// Writes `edits` as a script that `read_edit_script()` reads back to the same edits
-/// (numbers with 17 significant digits, so they round-trip exactly).
+/// (every number in the shortest form that reads back exactly).
 inline void write_edit_script(std::ostream& os, const std::vector<Script_edit>& edits)
 {
-  const std::streamsize precision = os.precision(17);
+  using internal::script_number_text;
   for(const Script_edit& e : edits)
   {
     const bool coarsen = e.verb == "coarsen";
@@ -313,24 +326,25 @@ inline void write_edit_script(std::ostream& os, const std::vector<Script_edit>& 
     {
       const Script_region& r = e.region;
       if(r.kind == Script_region::BALL)
-        os << " ball " << r.center[0] << ' ' << r.center[1] << ' ' << r.center[2] << ' ' << r.radius;
+        os << " ball " << script_number_text(r.center[0]) << ' ' << script_number_text(r.center[1]) << ' '
+           << script_number_text(r.center[2]) << ' ' << script_number_text(r.radius);
       else
       {
         os << (r.kind == Script_region::FILE_FACES ? " faces" : " triangles");
         for(std::size_t f : r.faces) os << ' ' << f;
       }
-      if(e.verb != "merge") os << ' ' << (coarsen ? -e.value : e.value);
+      if(e.verb != "merge") os << ' ' << script_number_text(coarsen ? -e.value : e.value);
     }
     else if(e.verb == "alpha")
-      os << ' ' << e.value;
+      os << ' ' << script_number_text(e.value);
     else if(e.verb == "sketch")
     {
-      os << " alpha " << e.value;
-      for(const std::array<double, 3>& p : e.points) os << ' ' << p[0] << ' ' << p[1] << ' ' << p[2];
+      os << " alpha " << script_number_text(e.value);
+      for(const std::array<double, 3>& p : e.points)
+        os << ' ' << script_number_text(p[0]) << ' ' << script_number_text(p[1]) << ' ' << script_number_text(p[2]);
     }
     os << '\n';
   }
-  os.precision(precision);
 }
 
 /// What one edit did, for the summary.

@@ -85,7 +85,8 @@ inline std::vector<std::size_t> json_faces(const nlohmann::json& j, const std::s
   faces.reserve(it->size());
   for(const nlohmann::json& f : *it)
   {
-    if(!f.is_number_unsigned())
+    // an integer (parsed ones >= 0 are unsigned, built ones may be signed)
+    if(!f.is_number_integer() || (!f.is_number_unsigned() && f.get<std::int64_t>() < 0))
       throw Request_error(op + ": 'faces' must hold integers >= 0 (got " + f.dump() + ")");
     const auto i = f.get<std::uint64_t>();
     if(i >= number_of_triangles)

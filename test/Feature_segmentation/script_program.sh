@@ -566,6 +566,8 @@ printf 'scale faces 1 2 -1.5\n' > "$bad/factor.edits"
 printf 'sketch 0 0 0 1 1\n' > "$bad/sketch_arity.edits"
 printf 'sketch alpha 1 0 0 0 1 1 1\n' > "$bad/sketch_alpha.edits"
 printf 'alpha 1\nundo\nundo # one too many\n' > "$bad/undo.edits"
+printf 'alpha 1\nundo\nalpha 0.8\nredo # forgotten by the edit before\n' > "$bad/redo.edits"
+printf 'merge triangles 0 12946\n' > "$bad/triangle_range.edits"
 echo "5 0 0 0 1 1 1" > "$bad/not_edges.polylines.txt"
 
 # expect_error NAME STATUS PATTERN ARGS...: the program must exit with STATUS, and its
@@ -636,6 +638,12 @@ expect_error edits_radius           1 'radius\.edits:1: ball: the radius must be
 expect_error edits_radius_negative  1 'radius_negative\.edits:1: ball: the radius must be > 0' "$fandisk" --edits "$bad/radius_negative.edits"
 expect_error edits_face_range       1 'face_range\.edits:1: faces: face index 12946 is out of range \(the mesh file has 12946 faces\)' "$fandisk" --edits "$bad/face_range.edits"
 expect_error edits_face_negative    1 "face_negative\.edits:1: faces: '-1' is not a face index" "$fandisk" --edits "$bad/face_negative.edits"
+expect_error edits_redo             1 'redo\.edits:4: redo: no undone edit to redo' "$fandisk" --edits "$bad/redo.edits"
+expect_error edits_triangle_range   1 'triangle_range\.edits:1: triangles: face index 12946 is out of range \(the mesh has 12946 triangles\)' "$fandisk" --edits "$bad/triangle_range.edits"
+expect_error port_outside_edit      2 "--port is an option of 'edit'" "$fandisk" --port 8080
+expect_error edit_port_range        2 '--port must be an integer in 0 \.\. 65535' edit "$fandisk" --port 70000
+expect_error edit_web_root          1 "the editor's web page is not found" edit "$fandisk" --web-root "$bad/no_such_folder"
+expect_error edit_missing_mesh      1 'no such file' edit "$bad/missing.off" --port 0
 expect_error edits_region           1 "region\.edits:1: merge: expected a region" "$fandisk" --edits "$bad/region.edits"
 expect_error edits_factor           1 'factor\.edits:1: scale: the factor must be >= 0' "$fandisk" --edits "$bad/factor.edits"
 expect_error edits_sketch_arity     1 'sketch_arity\.edits:1: sketch: expected at least two points' "$fandisk" --edits "$bad/sketch_arity.edits"

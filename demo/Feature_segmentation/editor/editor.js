@@ -105,7 +105,7 @@ function buildMesh(data) {
   const s = geometry.boundingSphere;
   controls.target.copy(s.center);
   camera.near = s.radius / 100; camera.far = s.radius * 100;
-  camera.position.copy(s.center).add(new THREE.Vector3(1, 0.8, 1.4).normalize().multiplyScalar(s.radius * 3.2));
+  camera.position.copy(s.center).add(new THREE.Vector3(1, 0.8, 1.4).normalize().multiplyScalar(s.radius * 2.6));
   camera.updateProjectionMatrix();
   controls.update();
 }
@@ -152,7 +152,7 @@ async function loadLabels() {
 }
 
 // ---- the state ----------------------------------------------------------------------
-const state = { current: null, busy: false, pendingAlpha: null };
+const state = { current: null, inflight: 0, queuedAlpha: null, ready: false };
 window.editor = state; // for the browser test and the curious
 
 function showState(s) {
@@ -161,7 +161,7 @@ function showState(s) {
   $('cut-cost').textContent = s.cut_cost.toFixed(3);
   $('last-edit').textContent = s.last_edit
     ? `${s.last_edit.op}: ${(1000 * s.last_edit.server_seconds).toFixed(1)} ms` : '–';
-  if (state.pendingAlpha === null && document.activeElement !== $('alpha')) {
+  if (!state.queuedAlpha && document.activeElement !== $('alpha')) {
     $('alpha').value = s.alpha;
   }
   $('alpha-value').textContent = Number(s.alpha).toFixed(2);
@@ -177,15 +177,20 @@ function showState(s) {
   list.scrollTop = list.scrollHeight;
 }
 
-// Sends one edit; the page shows its result. Global alpha moves made meanwhile are
-// folded into one request sent when this one returns.
-async function edit(request) {
-  if (state.busy) {
-    if (request.op === 'alpha') { state.pendingAlpha = request.value; return; }
-    status('busy: the last edit is still running', true);
-    return;
-  }
-  state.busy = true;
+// Sends one edit; the page shows its result. Edits are queued and sent one at a time,
+// in order; an alpha move made while an alpha edit still waits in the queue replaces its
+// value, so that dragging the slider or turning the wheel sends few requests.
+let queue = Promise.resolve();
+function edit(request) {
+  if (request.op === 'alpha' && state.queuedAlpha) { state.queuedAlpha.value = request.value; return queue; }
+  if (request.op === 'alpha') state.queuedAlpha = request;
+  ++state.inflight;
+  queue = queue.then(() => runEdit(request));
+  return queue;
+}
+
+async function runEdit(request) {
+  if (request === state.queuedAlpha) state.queuedAlpha = null;
   document.body.style.cursor = 'progress';
   try {
     const s = await api('/api/edit', request);
@@ -197,13 +202,7 @@ async function edit(request) {
   } catch (e) {
     status(`${request.op}: ${e.message}`, true);
   } finally {
-    state.busy = false;
-    document.body.style.cursor = '';
-    if (state.pendingAlpha !== null) {
-      const a = state.pendingAlpha;
-      state.pendingAlpha = null;
-      if (a !== state.current.alpha) await edit({ op: 'alpha', value: a });
-    }
+    if (--state.inflight === 0) document.body.style.cursor = '';
   }
 }
 
@@ -296,7 +295,7 @@ renderer.domElement.addEventListener('wheel', (event) => {
   }
   if (region.size > 0) regionEdit(up ? 'refine' : 'coarsen');
   else {
-    const base = state.pendingAlpha ?? state.current.alpha;
+    const base = state.queuedAlpha ? state.queuedAlpha.value : state.current.alpha;
     const a = Math.round((base + (up ? 0.05 : -0.05)) * 100) / 100;
     $('alpha').value = a;
     $('alpha-value').textContent = a.toFixed(2);

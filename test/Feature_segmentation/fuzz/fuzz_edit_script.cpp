@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target for the edit-script parser of the program: any text must give a
-// script or one `Edit_script_error`.
+// script or one `Edit_script_error`; a script, written back (as the editor saves its
+// sessions), must read back to the same text.
 #include "edit_script.h"
 
 #include <cstddef>
@@ -14,7 +15,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try
   {
     const fs_demo::Edit_script script = fs_demo::read_edit_script(in, "input.edits");
-    fs_demo::check_face_indices(script, 12);
+    std::ostringstream once, twice;
+    fs_demo::write_edit_script(once, script.edits);
+    std::istringstream again(once.str());
+    try
+    {
+      fs_demo::write_edit_script(twice, fs_demo::read_edit_script(again, "written.edits").edits);
+    }
+    catch(const fs_demo::Edit_script_error&)
+    {
+      __builtin_trap(); // the reader refuses what the writer wrote
+    }
+    if(once.str() != twice.str())
+      __builtin_trap(); // the writer and the reader disagree
+    fs_demo::check_face_indices(script, 12, 12);
   }
   catch(const fs_demo::Edit_script_error&)
   {

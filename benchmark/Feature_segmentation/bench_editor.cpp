@@ -1,0 +1,203 @@
+// The interactive editor's answer times (issue: every edit but a sketch within 50 ms of
+// server time on rockerarm, 41k faces, and within 100 ms at 200k faces). For each mesh
+// the editor's session (editor_api.h, what `feature_segmentation edit` serves) is built
+// at the defaults, then every kind of edit is sent as the page sends it, as JSON, N times
+// (--repeat, default 15): the time of the edit request (parse, region, library edit,
+// new state) and of the labels the page fetches next; median and maximum.
+// Meshes: fandisk (12,946 faces, from CGAL's data), fandisk subdivided flat twice
+// (207,136 faces, made here), and rockerarm (41k faces) from the paper's models in
+// --data DIR or $FEATURE_SEGMENTATION_DATA (skipped, with a message, when absent).
+//
+// Usage: bench_editor [--data DIR] [--repeat N] [--out FILE]
+#include "bench_common.h"
+
+#include "../../demo/Feature_segmentation/editor_api.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using fs_bench::seconds_since;
+
+struct Row
+{
+  std::string mesh, op;
+  std::size_t faces = 0, patches = 0;
+  double edit_median = 0, edit_max = 0, labels_median = 0;
+};
+
+double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+// Writes fandisk subdivided flat `levels` times as OFF.
+std::string subdivided_fandisk(int levels)
+{
+  CGAL::Surface_mesh<fs_demo::K::Point_3> m;
+  std::string error;
+  if(!fs_bench::read_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m, error))
+    throw std::runtime_error("fandisk.off: " + error);
+  std::vector<fs_bench::Soup_point> points;
+  std::vector<fs_bench::Soup_triangle> triangles;
+  for(auto v : m.vertices()) points.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
+  for(auto f : m.faces())
+  {
+    fs_bench::Soup_triangle t;
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) t[k++] = std::uint32_t(v);
+    triangles.push_back(t);
+  }
+  for(int i = 0; i < levels; ++i) fs_bench::subdivide(points, triangles);
+  const std::string path =
+    (std::filesystem::temp_directory_path() / ("bench_editor_fandisk_" + std::to_string(levels) + ".off")).string();
+  std::ofstream out(path);
+  out << std::setprecision(17) << "OFF\n" << points.size() << ' ' << triangles.size() << " 0\n";
+  for(const auto& p : points) out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for(const auto& t : triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  return path;
+}
+
+void bench(const std::string& name, const std::string& path, int repeat, std::vector<Row>& rows)
+{
+  fs_demo::Options options;
+  options.input = path;
+  options.quiet = true;
+  const auto start = std::chrono::steady_clock::now();
+  fs_demo::Editor_session session(options);
+  std::cerr << name << ": session ready in " << seconds_since(start) << " s" << std::endl;
+  const std::size_t n = session.number_of_triangles();
+  const nlohmann::json mesh = nlohmann::json::parse(session.mesh());
+  const std::vector<double> xyz = mesh["vertices"].get<std::vector<double> >();
+  const std::vector<std::size_t> tri = mesh["triangles"].get<std::vector<std::size_t> >();
+  const double diagonal = mesh["diagonal"].get<double>();
+  // a region: the triangles within 5% of the diagonal of the centroid of triangle n/3
+  auto centroid = [&](std::size_t f, int k) {
+    return (xyz[3 * tri[3 * f] + k] + xyz[3 * tri[3 * f + 1] + k] + xyz[3 * tri[3 * f + 2] + k]) / 3;
+  };
+  std::vector<std::size_t> region;
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    double d2 = 0;
+    for(int k = 0; k < 3; ++k) d2 += CGAL::square(centroid(f, k) - centroid(n / 3, k));
+    if(d2 <= CGAL::square(0.05 * diagonal)) region.push_back(f);
+  }
+
+  auto measure = [&](const std::string& op, auto make_request, auto after) {
+    std::vector<double> edit, labels;
+    std::size_t patches = 0;
+    for(int r = 0; r < repeat; ++r)
+    {
+      const nlohmann::json request = make_request(r);
+      auto t0 = std::chrono::steady_clock::now();
+      const nlohmann::json state = session.edit(request);
+      edit.push_back(seconds_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      const std::string l = session.labels();
+      labels.push_back(seconds_since(t0));
+      patches = state["patches"].get<std::size_t>();
+      after(r);
+    }
+    rows.push_back({name, op, n, patches, 1000 * median(edit), 1000 * *std::max_element(edit.begin(), edit.end()),
+                    1000 * median(labels)});
+  };
+  auto nothing = [](int) {};
+  auto undo = [&](int) { session.edit({{"op", "undo"}}); };
+  measure("alpha", [](int r) { return nlohmann::json{{"op", "alpha"}, {"value", r % 2 ? 0.6 : 0.9}}; }, nothing);
+  measure("refine", [&](int) { return nlohmann::json{{"op", "refine"}, {"faces", region}, {"amount", 0.3}}; }, undo);
+  measure("coarsen", [&](int) { return nlohmann::json{{"op", "coarsen"}, {"faces", region}, {"amount", 0.3}}; },
+          undo);
+  measure("merge",
+          [&](int) {
+            // two triangles of different patches: the first, and the first of another patch
+            const nlohmann::json l = nlohmann::json::parse(session.labels());
+            const auto& fp = l["face_patches"];
+            std::size_t other = 0;
+            while(other < n && fp[other] == fp[0]) ++other;
+            return nlohmann::json{{"op", "merge"}, {"faces", {0, other}}};
+          },
+          undo);
+  session.edit({{"op", "alpha"}, {"value", 0.9}});
+  measure("undo", [](int) { return nlohmann::json{{"op", "undo"}}; },
+          [&](int) { session.edit({{"op", "redo"}}); });
+  measure("redo",
+          [&](int) {
+            session.edit({{"op", "undo"}}); // untimed: something to redo
+            return nlohmann::json{{"op", "redo"}};
+          },
+          nothing);
+  // a sketch across the region, through three of its triangles
+  measure("sketch",
+          [&](int) {
+            nlohmann::json points = nlohmann::json::array();
+            for(std::size_t i : {std::size_t(0), region.size() / 2, region.size() - 1})
+              points.push_back({centroid(region[i], 0), centroid(region[i], 1), centroid(region[i], 2)});
+            return nlohmann::json{{"op", "sketch"}, {"points", points}};
+          },
+          undo);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::string data = std::getenv("FEATURE_SEGMENTATION_DATA") ? std::getenv("FEATURE_SEGMENTATION_DATA") : "";
+  std::string out = "bench_editor.csv";
+  int repeat = 15;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--data" && i + 1 < argc) data = argv[++i];
+    else if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+    else if(a == "--out" && i + 1 < argc) out = argv[++i];
+    else
+    {
+      std::cerr << "usage: bench_editor [--data DIR] [--repeat N] [--out FILE]\n";
+      return 2;
+    }
+  }
+  std::vector<Row> rows;
+  try
+  {
+    bench("fandisk", std::string(FS_MESH_DIR) + "/fandisk.off", repeat, rows);
+    const std::string rockerarm = data + "/paper-models/rockerarm_tri.off";
+    if(!data.empty() && std::filesystem::exists(rockerarm))
+      bench("rockerarm", rockerarm, repeat, rows);
+    else
+      std::cerr << "rockerarm skipped: " << (data.empty() ? "no --data DIR and no $FEATURE_SEGMENTATION_DATA"
+                                                          : rockerarm + " is absent") << std::endl;
+    const std::string big = subdivided_fandisk(2);
+    bench("fandisk x16", big, repeat, rows);
+    std::filesystem::remove(big);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "error: " << e.what() << '\n';
+    return 1;
+  }
+  std::cout << "Editor answer times, " << fs_bench::cpu_name() << ", one thread, median of " << repeat
+            << " (ms; edit = the POST /api/edit handler's work, labels = the GET /api/labels that follows)\n\n"
+            << "| mesh | faces | edit | patches | edit median | edit max | labels median |\n"
+            << "|---|---:|---|---:|---:|---:|---:|\n";
+  std::ofstream csv(out);
+  csv << "mesh,faces,edit,patches,edit_ms_median,edit_ms_max,labels_ms_median\n";
+  for(const Row& r : rows)
+  {
+    std::cout << "| " << r.mesh << " | " << r.faces << " | " << r.op << " | " << r.patches << " | " << std::fixed
+              << std::setprecision(1) << r.edit_median << " | " << r.edit_max << " | " << r.labels_median << " |\n"
+              << std::defaultfloat;
+    csv << fs_bench::csv_text(r.mesh) << ',' << r.faces << ',' << r.op << ',' << r.patches << ',' << r.edit_median
+        << ',' << r.edit_max << ',' << r.labels_median << '\n';
+  }
+  std::cout << "\nCSV: " << out << '\n';
+  return 0;
+}

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Starts `feature_segmentation edit` on a free port for the editor's tests, and stops it.
+import { spawn } from 'node:child_process';
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+export const program = join(process.env.FS_BINARY_DIR, 'demo/Feature_segmentation/feature_segmentation');
+export const fandisk = join(process.env.FS_MESH_DIR, 'fandisk.off');
+
+// Resolves to { url, outputDir, stop() } once the server prints its address.
+export function startEditor(mesh = fandisk, extra = []) {
+  const outputDir = mkdtempSync(join(tmpdir(), 'fs-editor-'));
+  const child = spawn(program, ['edit', mesh, '--port', '0', '--quiet', '--output-dir', outputDir, ...extra],
+                      { stdio: ['ignore', 'pipe', 'pipe'] });
+  let stderr = '';
+  child.stderr.on('data', (d) => { stderr += d; });
+  return new Promise((resolve, reject) => {
+    let stdout = '';
+    const timer = setTimeout(() => reject(new Error('the editor did not start in 120 s: ' + stderr)), 120000);
+    child.stdout.on('data', (d) => {
+      stdout += d;
+      const m = stdout.match(/editor: (http:\/\/\S+)/);
+      if (m) {
+        clearTimeout(timer);
+        resolve({ url: m[1], outputDir, child, stop: () => child.kill('SIGTERM') });
+      }
+    });
+    child.on('exit', (code) => { clearTimeout(timer); reject(new Error(`the editor exited (${code}): ${stderr}`)); });
+  });
+}
+
+// A small assertion counter: every check prints a line; the process fails if one failed.
+let failures = 0, checks = 0;
+export function check(what, ok, detail = '') {
+  ++checks;
+  if (!ok) ++failures;
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}${detail ? ' (' + detail + ')' : ''}`);
+}
+export function summary() {
+  console.log(`${checks - failures} of ${checks} checks passed`);
+  return failures === 0 ? 0 : 1;
+}

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The editor's HTTP interface on fandisk (12,946 triangles; 20 patches at the defaults):
+// every verb, each kind of bad request (answered 400/413 with the state unchanged),
+// concurrent edits, and a save whose edits.txt replays with --edits to the same labels.
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { startEditor, check, summary, program, fandisk } from './server.mjs';
+
+const editor = await startEditor();
+const url = editor.url;
+async function get(path) {
+  const r = await fetch(url + path);
+  return { status: r.status, body: await r.json() };
+}
+async function post(path, body) {
+  const r = await fetch(url + path, { method: 'POST', headers: { 'Content-Type': 'application/json' },
+                                      body: typeof body === 'string' ? body : JSON.stringify(body) });
+  return { status: r.status, body: await r.json() };
+}
+const state = async () => (await get('api/state')).body;
+const labels = async () => (await get('api/labels')).body;
+
+try {
+  check('the server listens on the loopback address by default', url.startsWith('http://127.0.0.1:'), url);
+
+  // ---- queries
+  const s0 = await state();
+  check('state: fandisk has 20 patches at the defaults', s0.patches === 20, s0.patches);
+  check('state: alpha 0.6, no edits, nothing to undo or redo',
+        s0.alpha === 0.6 && s0.edits.length === 0 && !s0.can_undo && !s0.can_redo);
+  const mesh = (await get('api/mesh')).body;
+  check('mesh: 12946 triangles, 6475 vertices',
+        mesh.triangles.length === 3 * 12946 && mesh.vertices.length === 3 * 6475 && s0.triangles === 12946);
+  check('mesh: every corner is a vertex index', mesh.triangles.every((i) => i >= 0 && i < 6475));
+  const l0 = await labels();
+  check('labels: one patch per triangle and vertex, numbered 0 .. 19',
+        l0.face_patches.length === 12946 && l0.vertex_patches.length === 6475 &&
+        Math.max(...l0.face_patches) === 19 && Math.max(...l0.vertex_patches) === 19);
+  const features = (await get('api/features')).body;
+  check('features: crease segments (6 numbers each) for the 875 crease edges',
+        features.creases.length === 6 * s0.crease_edges && s0.crease_edges === 875, s0.crease_edges);
+  const smooth = (await get('api/boundaries?smooth=1')).body, raw = (await get('api/boundaries?smooth=0')).body;
+  check('boundaries: the smoothing shortens them', smooth.curves.length > 0 && smooth.length < raw.length,
+        `${raw.length.toFixed(4)} -> ${smooth.length.toFixed(4)}`);
+  check('boundaries: smooth=2 is refused', (await get('api/boundaries?smooth=2')).status === 400);
+  check('an unknown path is 404 with a JSON error', (await get('api/nothing')).status === 404);
+
+  // ---- bad requests: 400 (or 413) and nothing changes
+  const bad = [
+    ['bad JSON', '{"op": "alpha", "value": }'],
+    ['NaN', '{"op": "alpha", "value": NaN}'],
+    ['an overflowing number', '{"op": "alpha", "value": 1e999}'],
+    ['a string for a number', { op: 'alpha', value: 'high' }],
+    ['no op', { value: 1 }],
+    ['an unknown op', { op: 'explode' }],
+    ['an unknown key', { op: 'alpha', value: 1, vaule: 2 }],
+    ['a face index out of range', { op: 'merge', faces: [0, 12946] }],
+    ['a negative face index', { op: 'refine', faces: [-1], amount: 0.2 }],
+    ['a fractional face index', { op: 'refine', faces: [1.5], amount: 0.2 }],
+    ['an empty region', { op: 'coarsen', faces: [], amount: 0.2 }],
+    ['a negative scale factor', { op: 'scale', faces: [1], factor: -1 }],
+    ['a sketch of one point', { op: 'sketch', points: [[0, 0, 0]] }],
+    ['a sketch point of two numbers', { op: 'sketch', points: [[0, 0], [1, 1, 1]] }],
+    ['a sketch alpha <= 1', { op: 'sketch', points: [[0, 0, 0], [0.1, 0, 0]], alpha: 1 }],
+    ['undo with nothing to undo', { op: 'undo' }],
+    ['redo with nothing to redo', { op: 'redo' }],
+    ['an array instead of an object', [1, 2, 3]],
+  ];
+  for (const [what, body] of bad) {
+    const r = await post('api/edit', body);
+    check(`400 for ${what}`, r.status === 400 && typeof r.body.error === 'string' && r.body.error.length > 0,
+          r.body.error);
+  }
+  const huge = await post('api/edit', JSON.stringify({ op: 'merge', faces: new Array(2_000_000).fill(12345) }));
+  check('413 for a body over 8 MB', huge.status === 413, huge.body.error);
+  const sBad = await state();
+  check('the state after the bad requests is unchanged',
+        sBad.patches === 20 && sBad.edits.length === 0 && sBad.cut_cost === s0.cut_cost);
+
+  // ---- every verb
+  const a = await post('api/edit', { op: 'alpha', value: 1.0 });
+  check('alpha 1.0: 25 patches, as the program gives', a.status === 200 && a.body.patches === 25, a.body.patches);
+  check('alpha: the answer is the new state with the edit listed and timed',
+        a.body.alpha === 1 && a.body.edits[0] === 'alpha 1' && a.body.last_edit.op === 'alpha' &&
+        a.body.last_edit.server_seconds > 0);
+  const l1 = await labels();
+  // two triangles of different patches: merging them removes exactly one patch
+  const f1 = 0, f2 = l1.face_patches.findIndex((p) => p !== l1.face_patches[0]);
+  const m = await post('api/edit', { op: 'merge', faces: [f1, f2] });
+  check('merge of two triangles of two patches: one patch fewer', m.body.patches === 24, m.body.patches);
+  const l2 = await labels();
+  check('merge: the two triangles now share a patch', l2.face_patches[f1] === l2.face_patches[f2]);
+  const r = await post('api/edit', { op: 'refine', faces: [...Array(12946).keys()], amount: 0.3 });
+  check('refine everywhere: at least as many patches', r.status === 200 && r.body.patches >= 24, r.body.patches);
+  const c = await post('api/edit', { op: 'coarsen', faces: [...Array(12946).keys()], amount: 0.3 });
+  check('coarsen by the same amount: back to 24 patches', c.body.patches === 24, c.body.patches);
+  const lc = await labels();
+  const sc = await post('api/edit', { op: 'scale', faces: [...Array(12946).keys()], factor: 0 });
+  check('scale by 0 everywhere: no feature reward left, fewer patches', sc.body.patches < 24, sc.body.patches);
+  // a sketch between two points of the mesh: feature edges appear
+  const p = (v) => mesh.vertices.slice(3 * v, 3 * v + 3);
+  const t0 = mesh.triangles.slice(0, 3), far = mesh.triangles.slice(3 * 600, 3 * 600 + 3);
+  const before = (await state()).feature_edges;
+  const sk = await post('api/edit', { op: 'sketch', points: [p(t0[0]), p(far[0])] });
+  check('sketch: accepted, feature edges added', sk.status === 200 && sk.body.feature_edges > before,
+        `${before} -> ${sk.body.feature_edges}`);
+  const u = await post('api/edit', { op: 'undo' });
+  check('undo the sketch: its feature edges go', u.body.feature_edges === before && u.body.can_redo);
+  const rd = await post('api/edit', { op: 'redo' });
+  check('redo the sketch: they come back', rd.body.feature_edges === sk.body.feature_edges &&
+        rd.body.cut_cost === sk.body.cut_cost && rd.body.patches === sk.body.patches);
+  await post('api/edit', { op: 'undo' });
+  await post('api/edit', { op: 'undo' });
+  const back = await state();
+  check('two undos: the state before the scale (24 patches)', back.patches === 24 && back.cut_cost === c.body.cut_cost);
+  check('after the undos, the labels are exactly those before the scale',
+        JSON.stringify((await labels()).face_patches) === JSON.stringify(lc.face_patches));
+
+  // ---- concurrent edits: one at a time, each answered
+  const values = [0.7, 0.8, 0.9, 1.1, 1.2, 0.75, 0.85, 0.95];
+  const answers = await Promise.all(values.map((v) => post('api/edit', { op: 'alpha', value: v })));
+  const sc2 = await state();
+  check('8 concurrent edits: all answered 200', answers.every((x) => x.status === 200));
+  check('8 concurrent edits: all in the history, the state is the last one applied',
+        sc2.edits.length === back.edits.length + 8 && sc2.edits[sc2.edits.length - 1] === `alpha ${sc2.alpha}`);
+
+  // ---- save, then replay edits.txt with the batch program
+  const saved = await post('api/save', {});
+  check('save: 200 and the files listed', saved.status === 200 && saved.body.files.includes('edits.txt'));
+  const out = editor.outputDir;
+  const replay = out + '/replay';
+  execFileSync(program, [fandisk, '--edits', join(out, 'edits.txt'), '--output-dir', replay, '--quiet']);
+  for (const f of ['face_patches.txt', 'vertex_patches.txt']) {
+    const same = readFileSync(join(out, f), 'utf8') === readFileSync(join(replay, f), 'utf8');
+    check(`replaying edits.txt gives the same ${f}`, same);
+  }
+  const s1 = JSON.parse(readFileSync(join(out, 'summary.json'), 'utf8'));
+  const s2 = JSON.parse(readFileSync(join(replay, 'summary.json'), 'utf8'));
+  check('replay: same patches and cut cost in summary.json',
+        s1.segmentation.patches === s2.segmentation.patches && s1.segmentation.cut_cost === s2.segmentation.cut_cost &&
+        s1.segmentation.patches === sc2.patches, `${s1.segmentation.patches} patches`);
+  check('the server still answers after all of it', (await get('api/state')).status === 200);
+} finally {
+  editor.stop();
+}
+process.exit(summary());

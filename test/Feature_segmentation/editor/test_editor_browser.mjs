@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The editor's page in a real browser: Debian's Chromium, headless, driven by
+// playwright-core (from npm, pinned by the editor's package-lock.json). Loads the page on
+// fandisk, checks that the canvas draws the mesh, moves the alpha slider and sees the
+// patch count change (20 -> 25, as the program gives at alpha 1), merges two patches
+// with a Ctrl-drag stroke and sees the count drop, undoes, and saves a screenshot for
+// the manual (FS_EDITOR_SCREENSHOT, default: the build folder). Exits 77 (skipped, with
+// a message) only where no browser exists.
+import { existsSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { join } from 'node:path';
+import { startEditor, check, summary } from './server.mjs';
+
+const browserPath = process.env.FS_CHROMIUM || '/usr/bin/chromium';
+if (!existsSync(browserPath)) {
+  console.log(`SKIPPED: no browser at ${browserPath} (install Debian's chromium, or set FS_CHROMIUM)`);
+  process.exit(77);
+}
+const require = createRequire(join(process.env.FS_NODE_MODULES, 'index.js'));
+const { chromium } = require('playwright-core');
+const screenshot = process.env.FS_EDITOR_SCREENSHOT || join(process.env.FS_BINARY_DIR, 'editor_screenshot.png');
+
+const editor = await startEditor();
+const browser = await chromium.launch({
+  executablePath: browserPath,
+  // software WebGL: CI machines have no GPU
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+});
+try {
+  const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(editor.url);
+  await page.waitForFunction(() => window.editor && window.editor.ready === true, null, { timeout: 60000 });
+  const patches = async () => Number(await page.textContent('#patches'));
+  check('the page loads and shows 20 patches', (await patches()) === 20);
+
+  // the canvas draws the mesh: many non-white pixels in many colours
+  const drawn = await page.evaluate(() => {
+    const src = document.querySelector('#view canvas');
+    const c = document.createElement('canvas');
+    c.width = src.width; c.height = src.height;
+    const g = c.getContext('2d');
+    g.drawImage(src, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let covered = 0;
+    const colours = new Set();
+    for (let i = 0; i < d.length; i += 4) {
+      if (d[i] < 250 || d[i + 1] < 250 || d[i + 2] < 250) ++covered;
+      colours.add((d[i] >> 4) * 256 + (d[i + 1] >> 4) * 16 + (d[i + 2] >> 4));
+    }
+    return { share: covered / (d.length / 4), colours: colours.size };
+  });
+  check('the canvas draws the mesh (over 10% of it covered, over 20 colours)',
+        drawn.share > 0.1 && drawn.colours > 20, `${(100 * drawn.share).toFixed(1)}%, ${drawn.colours} colours`);
+
+  // alpha slider to 1.0
+  await page.$eval('#alpha', (el) => { el.value = '1'; el.dispatchEvent(new Event('change')); });
+  await page.waitForFunction(() => document.querySelector('#patches').textContent === '25', null, { timeout: 30000 });
+  check('moving the alpha slider to 1 gives 25 patches', (await patches()) === 25);
+  const lastEdit = await page.textContent('#last-edit');
+  check('the time of the last edit is shown', /^alpha: [0-9.]+ ms$/.test(lastEdit), lastEdit);
+
+  // Ctrl-drag across the model: the patches the stroke touches merge
+  const box = await page.locator('#view canvas').boundingBox();
+  // a diagonal from the upper left to the lower right of the view, across several faces
+  const at = (t) => [box.x + box.width * (0.3 + 0.4 * t), box.y + box.height * (0.3 + 0.4 * t)];
+  await page.keyboard.down('Control');
+  await page.mouse.move(...at(0));
+  await page.mouse.down();
+  for (let i = 1; i <= 30; ++i) await page.mouse.move(...at(i / 30));
+  await page.mouse.up();
+  await page.keyboard.up('Control');
+  await page.waitForFunction(() => document.querySelector('#patches').textContent !== '25', null, { timeout: 30000 });
+  const merged = await patches();
+  check('a Ctrl-drag stroke merges patches', merged < 25, `${merged} patches`);
+  const state = await page.evaluate(() => window.editor.current);
+  check('the stroke arrived as one merge edit', state.edits[state.edits.length - 1].startsWith('merge triangles '));
+
+  // undo with the button
+  await page.click('#undo');
+  await page.waitForFunction(() => document.querySelector('#patches').textContent === '25', null, { timeout: 30000 });
+  await page.waitForFunction(() => window.editor.inflight === 0, null, { timeout: 30000 });
+  check('undo gives the 25 patches back', (await patches()) === 25);
+
+  // Shift-drag paints a region; Refine sends it as a local edit
+  await page.keyboard.down('Shift');
+  await page.mouse.move(...at(0.45));
+  await page.mouse.down();
+  for (let i = 1; i <= 10; ++i) await page.mouse.move(...at(0.45 + 0.01 * i));
+  await page.mouse.up();
+  await page.keyboard.up('Shift');
+  const painted = Number(await page.textContent('#region-size'));
+  check('a Shift-drag stroke paints a region', painted > 0, `${painted} faces`);
+  await page.click('#refine');
+  await page.waitForFunction(() => window.editor.current.edits.length === 4 && window.editor.inflight === 0, null,
+                             { timeout: 30000 });
+  const refined = await page.evaluate(() => window.editor.current.edits[3]);
+  check('Refine sends the painted faces as a local refinement', refined.startsWith('refine triangles ') &&
+        refined.split(' ').length === painted + 3, refined.slice(0, 40) + '...');
+  check('no script error on the page', errors.length === 0, errors.join('; '));
+  await page.screenshot({ path: screenshot });
+  console.log(`screenshot: ${screenshot}`);
+} finally {
+  await browser.close();
+  editor.stop();
+}
+process.exit(summary());
