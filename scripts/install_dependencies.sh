@@ -15,6 +15,8 @@ packages=(
   nlohmann-json3-dev libcpp-httplib-dev   # the editor's server (feature_segmentation edit)
   nodejs           # npm ci puts three.js (the editor's page) and playwright-core into the build
   chromium         # the editor's browser test (headless)
+  python3-dev pybind11-dev python3-numpy python3-pytest   # the Python module and its tests
+  python3-distributed   # Dask: python3 -m feature_segmentation.batch
 )
 # npm: Debian's package, unless an npm comes with the installed Node.js (NodeSource's)
 if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi

@@ -17,6 +17,8 @@
 //               per crease edge ...]}
 //   boundaries {"curves": [[x y z ...] per curve, closed ones repeat their first point],
 //               "smoothed", "length"}
+//   restart    {"radius": X, "strength_threshold": T}: the crest-line scale, recomputed;
+//               the history starts again
 //   edit       {"op": "alpha", "value": A} | {"op": "refine" or "coarsen", "faces": [...],
 //               "amount": D} | {"op": "scale", "faces": [...], "factor": F} |
 //               {"op": "merge", "faces": [...]} | {"op": "sketch", "points": [[x, y, z],
@@ -39,6 +41,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <filesystem>
 #include <mutex>
@@ -181,18 +184,18 @@ class Editor_session
 {
 public:
   /// Reads and segments `options.input` (and applies `options.edits_file`, if given).
-  explicit Editor_session(const Options& options)
-    : m_options(options), m_timer(options.quiet), m_pipeline(m_options, m_timer, m_results)
+  explicit Editor_session(const Options& options) : m_run(std::make_unique<Run>(options))
   {
     Edit_script script;
     if(!options.edits_file.empty())
       script = read_edit_script(options.edits_file);
-    m_pipeline.load();
-    check_face_indices(script, m_results.read_report.number_of_file_faces, num_faces(m_pipeline.mesh));
-    m_pipeline.segment();
-    m_triangles.assign(faces(m_pipeline.mesh).begin(), faces(m_pipeline.mesh).end());
+    Pipeline& p = m_run->pipeline;
+    p.load();
+    check_face_indices(script, m_run->results.read_report.number_of_file_faces, num_faces(p.mesh));
+    p.segment();
+    m_triangles.assign(faces(p.mesh).begin(), faces(p.mesh).end());
     for(const Script_edit& e : script.edits)
-      record(m_pipeline.edit_runner().apply(script, e), e);
+      record(p.edit_runner().apply(script, e), e);
   }
 
   std::size_t number_of_triangles() const { return m_triangles.size(); }
@@ -215,7 +218,7 @@ public:
     Edit_record r;
     try
     {
-      r = m_pipeline.edit_runner().apply(script, e);
+      r = m_run->pipeline.edit_runner().apply(script, e);
     }
     catch(const Edit_script_error& error)
     {
@@ -233,7 +236,7 @@ public:
   std::string mesh() const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    const Mesh& m = m_pipeline.mesh;
+    const Mesh& m = m_run->pipeline.mesh;
     std::vector<double> xyz;
     xyz.reserve(3 * num_vertices(m));
     std::vector<std::size_t> index(m.number_of_vertices() + m.number_of_removed_vertices(), 0);
@@ -258,8 +261,8 @@ public:
   std::string labels() const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    const Mesh& m = m_pipeline.mesh;
-    const auto& seg = *m_pipeline.segmentation;
+    const Mesh& m = m_run->pipeline.mesh;
+    const auto& seg = *m_run->pipeline.segmentation;
     std::vector<std::size_t> faces, vertices;
     faces.reserve(m_triangles.size());
     for(Mesh::Face_index f : m_triangles) faces.push_back(seg.patch(f));
@@ -271,7 +274,7 @@ public:
   std::string features() const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    const auto& seg = *m_pipeline.segmentation;
+    const auto& seg = *m_run->pipeline.segmentation;
     const Mesh& wm = seg.working_mesh();
     nlohmann::json ridges = nlohmann::json::array(), valleys = nlohmann::json::array(),
                    user = nlohmann::json::array();
@@ -287,7 +290,7 @@ public:
       (line.type == FS::Feature_line_type::RIDGE ? ridges
        : line.type == FS::Feature_line_type::VALLEY ? valleys : user).push_back(xyz);
     }
-    const Mesh& m = m_pipeline.mesh;
+    const Mesh& m = m_run->pipeline.mesh;
     std::vector<double> creases;
     for(Mesh::Edge_index e : m.edges())
       if(seg.is_crease_edge(e))
@@ -300,10 +303,10 @@ public:
   std::string boundaries(bool smooth) const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    FS::Patch_boundaries<Mesh> b = m_pipeline.segmentation->patch_boundaries();
+    FS::Patch_boundaries<Mesh> b = m_run->pipeline.segmentation->patch_boundaries();
     if(smooth)
       FS::smooth_patch_boundaries(b, FS::parameters::smoothing_iterations(
-                                       m_options.smoothing_iterations ? *m_options.smoothing_iterations
+                                       m_run->options.smoothing_iterations ? *m_run->options.smoothing_iterations
                                                                       : default_smoothing_iterations));
     nlohmann::json curves = nlohmann::json::array();
     for(const auto& c : b.curves())
@@ -316,17 +319,53 @@ public:
     return nlohmann::json{{"curves", curves}, {"smoothed", smooth}, {"length", b.length()}}.dump();
   }
 
+  /// Starts again at another crest-line scale (the authors' Q/W/E keys):
+  /// {"radius": X, "strength_threshold": T}, either or both, as the options --radius
+  /// (0 <= X <= 1) and --strength-threshold (T >= 0). The curvature, the feature lines
+  /// and the oversegmentation are computed anew, which no edit does: the history starts
+  /// again (edits.txt then names these options for its replay).
+  /// \throws Request_error if the request is not valid (nothing changes)
+  nlohmann::json restart(const nlohmann::json& request)
+  {
+    if(!request.is_object() || request.empty())
+      throw Request_error("restart: give \"radius\" and/or \"strength_threshold\"");
+    internal::json_keys(request, "restart", {"radius", "strength_threshold"});
+    std::lock_guard<std::mutex> lock(m_mutex);
+    Options options = m_run->options;
+    options.edits_file.clear();
+    if(request.contains("radius"))
+    {
+      options.radius = internal::json_finite(request, "radius", "restart");
+      if(!(options.radius >= 0 && options.radius <= 1))
+        throw Request_error("restart: 'radius' must be in [0, 1]");
+    }
+    if(request.contains("strength_threshold"))
+    {
+      options.strength_threshold = internal::json_finite(request, "strength_threshold", "restart");
+      if(!(*options.strength_threshold >= 0))
+        throw Request_error("restart: 'strength_threshold' must be >= 0");
+    }
+    auto run = std::make_unique<Run>(options);
+    run->pipeline.load();
+    run->pipeline.segment();
+    m_run = std::move(run);
+    m_history.clear();
+    m_last.reset();
+    return state_unlocked();
+  }
+
   /// Writes the outputs of the program and edits.txt into `--output-dir`.
   nlohmann::json save()
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    const std::filesystem::path dir(m_options.output_dir);
+    const Options& options = m_run->options;
+    const std::filesystem::path dir(options.output_dir);
     write_file(dir / "edits.txt", [&](std::ostream& os) {
-      os << "# feature_segmentation edit " << m_options.input << ": " << m_history.size()
-         << " edits; replay with --edits\n";
+      os << "# " << m_history.size() << " edits of feature_segmentation edit on " << options.input << "\n"
+         << "# replay: feature_segmentation MESH" << segmentation_options_text(options) << " --edits edits.txt\n";
       write_edit_script(os, m_history);
     });
-    m_pipeline.write_outputs();
+    m_run->pipeline.write_outputs();
     nlohmann::json files = nlohmann::json::array();
     for(const char* f : {"segmentation.ply", "segmentation_refined.ply", "face_patches.txt", "vertex_patches.txt",
                          "boundaries.polylines.txt", "feature_lines.polylines.txt", "feature_lines.obj",
@@ -342,15 +381,15 @@ private:
   {
     e.line = m_history.size() + 1;
     m_history.push_back(e);
-    m_results.edits.push_back(r);
-    m_results.edits.back().line = e.line;
+    m_run->results.edits.push_back(r);
+    m_run->results.edits.back().line = e.line;
     m_last = r;
     m_last_server_seconds = r.seconds + r.prepare_seconds;
   }
 
   nlohmann::json state_unlocked() const
   {
-    const auto& seg = *m_pipeline.segmentation;
+    const auto& seg = *m_run->pipeline.segmentation;
     std::ostringstream script;
     write_edit_script(script, m_history);
     nlohmann::json lines = nlohmann::json::array();
@@ -367,10 +406,13 @@ private:
             {"can_undo", history_depths().first > 0},
             {"can_redo", history_depths().second > 0},
             {"last_edit", last},
-            {"vertices", num_vertices(m_pipeline.mesh)},
+            {"vertices", num_vertices(m_run->pipeline.mesh)},
             {"triangles", m_triangles.size()},
             {"feature_edges", seg.number_of_feature_edges()},
-            {"crease_edges", seg.number_of_crease_edges()}};
+            {"crease_edges", seg.number_of_crease_edges()},
+            {"radius", m_run->options.radius},
+            {"strength_threshold", m_run->options.strength_threshold ? *m_run->options.strength_threshold
+                                                                     : FS::default_strength_threshold}};
   }
 
   // Whether the history has an edit that an undo would take back / a redo make again
@@ -387,11 +429,18 @@ private:
     return {undoable, redoable};
   }
 
-  Options m_options;
-  Stage_timer m_timer;
-  Results m_results;
+  // The options, timer, results and pipeline of one run (a restart makes another).
+  struct Run
+  {
+    explicit Run(const Options& o) : options(o), timer(o.quiet), pipeline(options, timer, results) {}
+    Options options;
+    Stage_timer timer;
+    Results results;
+    Pipeline pipeline;
+  };
+
   mutable std::mutex m_mutex;
-  Pipeline m_pipeline;
+  std::unique_ptr<Run> m_run;
   std::vector<Mesh::Face_index> m_triangles;
   std::vector<Script_edit> m_history;
   std::optional<Edit_record> m_last;

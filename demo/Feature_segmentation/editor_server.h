@@ -5,6 +5,7 @@
 // time) and the JSON interface of editor_api.h:
 //   GET  /api/state, /api/mesh, /api/labels, /api/features, /api/boundaries?smooth=0|1
 //   POST /api/edit   one edit (body: JSON), answered with the new state
+//   POST /api/restart  another crest-line scale: {"radius": X, "strength_threshold": T}
 //   POST /api/save   writes the outputs and edits.txt into --output-dir
 // A refused request gets status 400 and {"error": "..."}; request bodies over 8 MB get
 // 413; an unexpected failure 500; the state never changes on an error.
@@ -71,6 +72,30 @@ inline void send_error(httplib::Response& res, int status, const std::string& wh
   send_json(res, nlohmann::json{{"error", what}}.dump(), status);
 }
 
+// Parses the body as JSON and answers with `call(body)`; 400 for bad JSON or a request
+// that `call` refuses.
+template <typename Call>
+void answer_json_request(const httplib::Request& req, httplib::Response& res, Call call)
+{
+  nlohmann::json request;
+  try
+  {
+    request = nlohmann::json::parse(req.body);
+  }
+  catch(const nlohmann::json::exception& e)
+  {
+    return send_error(res, 400, std::string("the request is not valid JSON: ") + e.what());
+  }
+  try
+  {
+    send_json(res, call(request).dump());
+  }
+  catch(const Request_error& e)
+  {
+    send_error(res, 400, e.what());
+  }
+}
+
 } // namespace internal
 
 /// Configures `server` to serve `session` and the page in `web_root`.
@@ -103,23 +128,10 @@ inline void configure_editor_server(httplib::Server& server, Editor_session& ses
     send_json(res, session.boundaries(smooth == "1"));
   });
   server.Post("/api/edit", [&](const httplib::Request& req, httplib::Response& res) {
-    nlohmann::json request;
-    try
-    {
-      request = nlohmann::json::parse(req.body);
-    }
-    catch(const nlohmann::json::exception& e)
-    {
-      return send_error(res, 400, std::string("the request is not valid JSON: ") + e.what());
-    }
-    try
-    {
-      send_json(res, session.edit(request).dump());
-    }
-    catch(const Request_error& e)
-    {
-      send_error(res, 400, e.what());
-    }
+    internal::answer_json_request(req, res, [&](const nlohmann::json& j) { return session.edit(j); });
+  });
+  server.Post("/api/restart", [&](const httplib::Request& req, httplib::Response& res) {
+    internal::answer_json_request(req, res, [&](const nlohmann::json& j) { return session.restart(j); });
   });
   server.Post("/api/save", [&](const httplib::Request&, httplib::Response& res) {
     send_json(res, session.save().dump());
@@ -156,6 +168,10 @@ inline int run_editor(const Options& options)
     throw std::runtime_error("cannot listen on " + options.host + ":" + std::to_string(options.port) +
                              " (in use, or not an address of this machine)");
   const bool ipv6 = options.host.find(':') != std::string::npos;
+  if(options.host != "127.0.0.1" && options.host != "localhost" && options.host != "::1")
+    std::cerr << "notice: --host " << options.host
+              << ": the editor (which writes into " << options.output_dir
+              << ") is open to other machines; it has no password" << std::endl;
   std::cout << "editor: http://" << (ipv6 ? "[" + options.host + "]" : options.host) << ":" << port << "/"
             << std::endl;
   if(!server.listen_after_bind())

@@ -5,9 +5,11 @@
 // (CGAL polylines and OBJ), the segmentation (a PLY mesh with a patch id and colour per
 // face, and the patch of every vertex and face of the input file) and a JSON summary
 // into an output folder. `feature_segmentation edit MESH` serves the interactive editor
-// instead (editor_server.h). Bad input or bad options give one "error: ..." line on
+// instead (editor_server.h), `feature_segmentation batch INPUTS...` segments many meshes
+// (batch_command.h). Bad input or bad options give one "error: ..." line on
 // stderr and a non-zero exit status.
 
+#include "batch_command.h"
 #include "editor_server.h"
 #include "huge_pages.h"
 #include "pipeline.h"
@@ -25,50 +27,9 @@ namespace {
 
 using namespace fs_demo;
 
-// Creates the output folder, or fails with a clear message before any time is spent on
-// the mesh.
-void create_output_dir(const Options& options)
-{
-  std::error_code ec;
-  std::filesystem::create_directories(options.output_dir, ec);
-  if(ec || !std::filesystem::is_directory(options.output_dir))
-    throw std::runtime_error(options.output_dir + ": cannot create the output folder" +
-                             (ec ? " (" + ec.message() + ")" : std::string()));
-}
-
 int run(const Options& options)
 {
-  Stage_timer timer(options.quiet);
-  Results results;
-  create_output_dir(options);
-
-  // A mistake in the edit script is found before the mesh is read; face indices are
-  // checked against the file as soon as it is read.
-  Edit_script script;
-  if(!options.edits_file.empty())
-    script = read_edit_script(options.edits_file);
-
-  Pipeline pipeline(options, timer, results);
-  pipeline.load();
-  check_face_indices(script, results.read_report.number_of_file_faces, num_faces(pipeline.mesh));
-  pipeline.segment();
-
-  if(!script.edits.empty())
-  {
-    Edit_runner<Mesh, K>& runner = pipeline.edit_runner();
-    timer.run("edits", [&]() {
-      for(const Script_edit& e : script.edits)
-      {
-        results.edits.push_back(runner.apply(script, e));
-        const Edit_record& r = results.edits.back();
-        if(!options.quiet)
-          std::cerr << "edit " << options.edits_file << ":" << r.line << ": " << r.verb << ": "
-                    << r.patches << " patches, cut cost " << r.cut_cost << " (" << std::fixed
-                    << std::setprecision(3) << r.seconds << " s)" << std::defaultfloat << std::endl;
-      }
-    });
-  }
-  pipeline.write_outputs();
+  segment_and_write(options);
   if(!options.quiet)
     std::cerr << "outputs written to " << options.output_dir << "/" << std::endl;
   return EXIT_SUCCESS;
@@ -101,6 +62,8 @@ int main(int argc, char** argv)
       create_output_dir(options);
       return run_editor(options);
     }
+    if(options.command == Command::BATCH)
+      return run_batch(options);
     return run(options);
   }
   catch(const Input_error& e)

@@ -363,10 +363,27 @@ public:
   /// \throws Input_error on a file that cannot be read or repaired
   void load()
   {
-    Results& results = m_results;
-    results.read_report = m_timer.run("load", [&]() {
+    m_results.read_report = m_timer.run("load", [&]() {
       return read_input_mesh(m_options.input, mesh, correspondence);
     });
+    loaded();
+  }
+
+  /// Makes the mesh from a polygon soup in memory (stage "load"), with the repairs of the
+  /// file readers; `name` names it in messages.
+  /// \throws Input_error if the soup cannot be made a mesh the pipeline can process
+  void load(Mesh_soup& soup, const std::string& name)
+  {
+    m_results.read_report = m_timer.run("load", [&]() {
+      return mesh_from_soup(name, soup, mesh, correspondence);
+    });
+    loaded();
+  }
+
+private:
+  void loaded()
+  {
+    Results& results = m_results;
     if(!m_options.quiet)
       for(const std::string& notice : results.read_report.notices)
         std::cerr << "notice: " << m_options.input << ": " << notice << '\n';
@@ -378,6 +395,7 @@ public:
                 << results.number_of_faces << " faces" << std::endl;
   }
 
+public:
   /// Runs the automatic segmentation (stages "curvature" and "feature_lines" with
   /// --feature-edges, then "segmentation").
   void segment()
@@ -555,6 +573,55 @@ private:
   Results& m_results;
   std::unique_ptr<Edit_runner<Mesh, K> > m_runner;
 };
+
+// Creates the output folder, or fails with a clear message before any time is spent on
+// the mesh.
+inline void create_output_dir(const Options& options)
+{
+  std::error_code ec;
+  std::filesystem::create_directories(options.output_dir, ec);
+  if(ec || !std::filesystem::is_directory(options.output_dir))
+    throw std::runtime_error(options.output_dir + ": cannot create the output folder" +
+                             (ec ? " (" + ec.message() + ")" : std::string()));
+}
+
+/// The subcommand `segment` on one mesh: reads it, segments it, applies --edits, writes
+/// every output. Returns what it measured.
+inline Results segment_and_write(const Options& options)
+{
+  Stage_timer timer(options.quiet);
+  Results results;
+  create_output_dir(options);
+
+  // A mistake in the edit script is found before the mesh is read; face indices are
+  // checked against the file as soon as it is read.
+  Edit_script script;
+  if(!options.edits_file.empty())
+    script = read_edit_script(options.edits_file);
+
+  Pipeline pipeline(options, timer, results);
+  pipeline.load();
+  check_face_indices(script, results.read_report.number_of_file_faces, num_faces(pipeline.mesh));
+  pipeline.segment();
+
+  if(!script.edits.empty())
+  {
+    Edit_runner<Mesh, K>& runner = pipeline.edit_runner();
+    timer.run("edits", [&]() {
+      for(const Script_edit& e : script.edits)
+      {
+        results.edits.push_back(runner.apply(script, e));
+        const Edit_record& r = results.edits.back();
+        if(!options.quiet)
+          std::cerr << "edit " << options.edits_file << ":" << r.line << ": " << r.verb << ": "
+                    << r.patches << " patches, cut cost " << r.cut_cost << " (" << std::fixed
+                    << std::setprecision(3) << r.seconds << " s)" << std::defaultfloat << std::endl;
+      }
+    });
+  }
+  pipeline.write_outputs();
+  return results;
+}
 
 } // namespace fs_demo
 

@@ -12,12 +12,14 @@
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
 
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fs_demo {
 
@@ -38,8 +40,9 @@ public:
   explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
 };
 
-// The subcommand: `segment` (the default) writes the outputs; `edit` serves the editor.
-enum class Command { SEGMENT, EDIT };
+// The subcommand: `segment` (the default) writes the outputs; `edit` serves the editor;
+// `batch` segments many meshes.
+enum class Command { SEGMENT, EDIT, BATCH };
 
 struct Options
 {
@@ -49,6 +52,11 @@ struct Options
   std::string host = "127.0.0.1";
   int port = 8080;
   std::string web_root;
+  // batch: the meshes, folders of meshes and list files given; the meshes segmented at
+  // once; whether meshes with complete outputs are done again.
+  std::vector<std::string> inputs;
+  int jobs = 1;
+  bool force = false;
   std::string input = std::string(FS_MESH_DIR) + "/fandisk.off";
   std::string output_dir = "feature_segmentation_output";
   int rings = 2;
@@ -76,6 +84,16 @@ inline void print_usage(std::ostream& os)
 {
   os << "Usage: " << program_name << " [segment] [MESH] [--output-dir DIR] [options]\n"
      << "       " << program_name << " edit [MESH] [--port N] [--host H] [--output-dir DIR] [options]\n"
+     << "       " << program_name << " batch INPUTS... --output-dir DIR [--jobs N] [--force] [options]\n"
+     << "\n"
+     << "batch: segments every mesh of INPUTS (mesh files; folders, searched recursively\n"
+     << "for .off, .obj, .ply and .stl files; list files, .txt, one path per line, '#'\n"
+     << "comments) into DIR/NAME/ (NAME: the file's name without extension, made unique),\n"
+     << "N meshes at a time (default 1), and writes DIR/batch_summary.csv and\n"
+     << "DIR/batch_summary.jsonl (mesh, output, faces, patches, cut cost, seconds, status,\n"
+     << "error: a row per mesh, in input order). A mesh whose folder holds a summary.json\n"
+     << "is skipped unless --force; a mesh that fails is recorded and the batch goes on;\n"
+     << "the exit status is 1 if any failed.\n"
      << "\n"
      << "edit: segments MESH, then serves the interactive editor, a web page, at\n"
      << "http://H:N/ (default http://127.0.0.1:8080/; only this machine can reach it\n"
@@ -171,6 +189,8 @@ inline void print_usage(std::ostream& os)
      << "                            0.0.0.0 opens the editor to the network)\n"
      << "  --web-root DIR            edit: the folder of the editor's page (default: the\n"
      << "                            one installed with the program)\n"
+     << "  --jobs N                  batch: meshes segmented at once, 1 .. 1024 (default: 1)\n"
+     << "  --force                   batch: segment again meshes whose outputs are complete\n"
      << "  --help                    print this help and exit\n"
      << "\n"
      << "Edit scripts (--edits FILE): one edit per line, applied in order; '#' starts a\n"
@@ -246,8 +266,11 @@ inline Options parse_command_line(int argc, char** argv)
   bool has_watershed = false;
   int first = 1;
   if(argc > 1 && std::string(argv[1]) == "edit") { options.command = Command::EDIT; first = 2; }
+  else if(argc > 1 && std::string(argv[1]) == "batch") { options.command = Command::BATCH; first = 2; }
   else if(argc > 1 && std::string(argv[1]) == "segment") first = 2;
   const bool editing = options.command == Command::EDIT;
+  const bool batch = options.command == Command::BATCH;
+  bool has_output_dir = false;
   for(int i = first; i < argc; ++i)
   {
     std::string arg = argv[i];
@@ -283,6 +306,7 @@ inline Options parse_command_line(int argc, char** argv)
     else if(arg == "--output-dir")
     {
       options.output_dir = take_value();
+      has_output_dir = true;
       if(options.output_dir.empty())
         throw Usage_error("--output-dir expects a non-empty folder name");
     }
@@ -382,8 +406,26 @@ inline Options parse_command_line(int argc, char** argv)
       else
         options.web_root = text;
     }
+    else if(arg == "--jobs")
+    {
+      if(!batch)
+        throw Usage_error("--jobs is an option of 'batch' (" + std::string(program_name) + " batch INPUTS --jobs N)");
+      const std::string text = take_value();
+      options.jobs = parse_int(arg, text);
+      if(options.jobs < 1 || options.jobs > 1024)
+        throw Usage_error("--jobs must be an integer in 1 .. 1024 (got " + text + ")");
+    }
+    else if(arg == "--force")
+    {
+      refuse_value();
+      if(!batch)
+        throw Usage_error("--force is an option of 'batch'");
+      options.force = true;
+    }
     else if(arg.size() > 1 && arg[0] == '-')
       throw Usage_error("unknown option '" + arg + "' (see --help)");
+    else if(batch)
+      options.inputs.push_back(arg);
     else
     {
       if(has_input)
@@ -392,11 +434,44 @@ inline Options parse_command_line(int argc, char** argv)
       has_input = true;
     }
   }
+  if(batch && !options.help)
+  {
+    if(options.inputs.empty())
+      throw Usage_error("batch: no input (give meshes, folders of meshes or list files)");
+    if(!has_output_dir)
+      throw Usage_error("batch: --output-dir DIR is required (one folder per mesh goes into it)");
+    if(!options.edits_file.empty())
+      throw Usage_error("batch: --edits is an option of one mesh, not of a batch");
+  }
   if(!options.ridges && !options.valleys && !options.quiet && !options.help)
     std::cerr << "notice: --no-ridges and --no-valleys: no crest lines will be detected\n";
   if(options.full_graph && has_watershed && !options.quiet && !options.help)
     std::cerr << "notice: --full-graph: no oversegmentation, --watershed has no effect\n";
   return options;
+}
+
+/// The options that decide the segmentation, as command-line flags (" --alpha 0.6 ..."),
+/// every one explicit, numbers in the shortest form that reads back exactly: what a
+/// replay of an editor session (`--edits edits.txt`) must be given.
+inline std::string segmentation_options_text(const Options& o)
+{
+  auto number = [](double x) {
+    char buffer[32];
+    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return std::string(buffer, r.ptr);
+  };
+  std::string t = " --rings " + std::to_string(o.rings) + " --radius " + number(o.radius) +
+                  " --strength-threshold " +
+                  number(o.strength_threshold ? *o.strength_threshold : FS::default_strength_threshold) +
+                  " --alpha " + number(o.alpha) + " --gamma " + number(o.gamma) + " --crease-angle " +
+                  number(o.crease_angle) + " --crease-filter " + std::to_string(o.crease_filter) + " --solver " +
+                  o.solver + " --watershed " + o.watershed;
+  if(o.full_graph) t += " --full-graph";
+  if(!o.ridges) t += " --no-ridges";
+  if(!o.valleys) t += " --no-valleys";
+  if(!o.feature_edges_file.empty()) t += " --feature-edges " + o.feature_edges_file;
+  if(o.smoothing_iterations) t += " --smoothing-iterations " + std::to_string(*o.smoothing_iterations);
+  return t;
 }
 
 } // namespace fs_demo

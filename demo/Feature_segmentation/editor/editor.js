@@ -165,6 +165,8 @@ function showState(s) {
     $('alpha').value = s.alpha;
   }
   $('alpha-value').textContent = Number(s.alpha).toFixed(2);
+  $('radius-value').textContent = Number(s.radius).toPrecision(3);
+  if (state.startRadius === undefined) state.startRadius = s.radius;
   $('undo').disabled = !s.can_undo;
   $('redo').disabled = !s.can_redo;
   $('edit-count').textContent = s.edits.length;
@@ -204,6 +206,32 @@ async function runEdit(request) {
   } finally {
     if (--state.inflight === 0) document.body.style.cursor = '';
   }
+}
+
+// Another crest-line scale: the server recomputes curvature, feature lines and the
+// oversegmentation, and the history starts again. Queued like an edit.
+function restart(radius) {
+  radius = Math.min(1, Math.max(0, radius));
+  ++state.inflight;
+  queue = queue.then(async () => {
+    document.body.style.cursor = 'progress';
+    status(`recomputing the features at radius ${radius.toPrecision(3)} ...`);
+    try {
+      const t0 = performance.now();
+      const s = await api('/api/restart', { radius });
+      showState(s);
+      await loadLabels();
+      await loadFeatures();
+      await loadBoundaries();
+      status(`radius ${radius.toPrecision(3)}: ${s.patches} patches, ${s.feature_edges} feature edges ` +
+             `(${((performance.now() - t0) / 1000).toFixed(1)} s; the edits start again)`);
+    } catch (e) {
+      status(`restart: ${e.message}`, true);
+    } finally {
+      if (--state.inflight === 0) document.body.style.cursor = '';
+    }
+  });
+  return queue;
 }
 
 // ---- picking and gestures -----------------------------------------------------------
@@ -326,6 +354,9 @@ async function save() {
   } catch (e) { status(`save: ${e.message}`, true); }
 }
 $('save').addEventListener('click', save);
+$('scale-finer').addEventListener('click', () => restart(state.current.radius / 1.5));
+$('scale-start').addEventListener('click', () => restart(state.startRadius));
+$('scale-coarser').addEventListener('click', () => restart(state.current.radius * 1.5));
 $('show-lines').addEventListener('change', () => { overlays.lines.visible = $('show-lines').checked; render(); });
 $('show-creases').addEventListener('change', () => { overlays.creases.visible = $('show-creases').checked; render(); });
 $('show-boundaries').addEventListener('change', loadBoundaries);
@@ -336,6 +367,10 @@ window.addEventListener('keydown', (event) => {
   else if (ctrl && event.key.toLowerCase() === 'y') { event.preventDefault(); edit({ op: 'redo' }); }
   else if (ctrl && event.key.toLowerCase() === 's') { event.preventDefault(); save(); }
   else if (event.key === 'Escape') clearRegion();
+  else if (ctrl || event.altKey || event.target.tagName === 'INPUT') return;
+  else if (event.key === 'q' || event.key === 'Q') restart(state.current.radius / 1.5);
+  else if (event.key === 'w' || event.key === 'W') restart(state.startRadius);
+  else if (event.key === 'e' || event.key === 'E') restart(state.current.radius * 1.5);
 });
 
 // ---- start --------------------------------------------------------------------------

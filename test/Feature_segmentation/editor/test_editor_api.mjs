@@ -140,6 +140,29 @@ try {
   check('replay: same patches and cut cost in summary.json',
         s1.segmentation.patches === s2.segmentation.patches && s1.segmentation.cut_cost === s2.segmentation.cut_cost &&
         s1.segmentation.patches === sc2.patches, `${s1.segmentation.patches} patches`);
+
+  // ---- another crest-line scale (the authors' Q/W/E): recomputed, the history restarts
+  for (const [what, body] of [['no key', {}], ['a radius over 1', { radius: 2 }],
+                              ['a negative threshold', { strength_threshold: -1 }], ['an unknown key', { rings: 3 }],
+                              ['a string', { radius: 'wide' }]]) {
+    const rr = await post('api/restart', body);
+    check(`restart: 400 for ${what}`, rr.status === 400, rr.body.error);
+  }
+  check('restart: the refused requests changed nothing', (await state()).edits.length === sc2.edits.length);
+  const wide = await post('api/restart', { radius: 0.03 });
+  check('restart at radius 0.03: the default 0.01 is gone, no edits, alpha back to 0.6',
+        wide.status === 200 && wide.body.radius === 0.03 && wide.body.edits.length === 0 && wide.body.alpha === 0.6);
+  check('restart at radius 0.03: other feature edges', wide.body.feature_edges !== s0.feature_edges,
+        `${s0.feature_edges} -> ${wide.body.feature_edges}`);
+  await post('api/edit', { op: 'alpha', value: 0.8 });
+  await post('api/save', {});
+  const header = readFileSync(join(out, 'edits.txt'), 'utf8').split('\n')[1];
+  check('edits.txt names the options of its replay, the new radius among them', header.includes(' --radius 0.03 '), header);
+  const flags = header.replace(/^# replay: feature_segmentation MESH /, '').replace(/ --edits edits.txt$/, '').split(' ');
+  const replay2 = out + '/replay2';
+  execFileSync(program, [fandisk, ...flags, '--edits', join(out, 'edits.txt'), '--output-dir', replay2, '--quiet']);
+  check('replaying edits.txt with those options gives the same face_patches.txt',
+        readFileSync(join(out, 'face_patches.txt'), 'utf8') === readFileSync(join(replay2, 'face_patches.txt'), 'utf8'));
   check('the server still answers after all of it', (await get('api/state')).status === 200);
 } finally {
   editor.stop();

@@ -1,0 +1,156 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The Python module against the program on the same files, its edits, and its errors."""
+import os
+import subprocess
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+import pytest
+
+import feature_segmentation as fs
+
+MESHES = os.environ["FS_MESH_DIR"]
+PROGRAM = os.path.join(os.environ["FS_BINARY_DIR"], "demo/Feature_segmentation/feature_segmentation")
+FANDISK = os.path.join(MESHES, "fandisk.off")
+
+
+def program_patches(mesh, out, *options):
+    subprocess.run([PROGRAM, mesh, "--output-dir", str(out), "--quiet", *options], check=True)
+    return np.loadtxt(out / "face_patches.txt", dtype=np.int64), np.loadtxt(out / "vertex_patches.txt",
+                                                                              dtype=np.int64)
+
+
+@pytest.fixture(scope="module")
+def fandisk():
+    return fs.read_mesh(FANDISK)
+
+
+def test_read_mesh_shapes_and_types(fandisk):
+    v, f = fandisk
+    assert v.shape == (6475, 3) and v.dtype == np.float64
+    assert f.shape == (12946, 3) and f.dtype == np.int64
+    assert f.min() == 0 and f.max() == 6474
+
+
+def test_segment_equals_the_program(fandisk, tmp_path):
+    faces, vertices, result = fs.segment(*fandisk)
+    program_faces, program_vertices = program_patches(FANDISK, tmp_path)
+    assert np.array_equal(faces, program_faces)
+    assert np.array_equal(vertices, program_vertices)
+    assert result.patches == 20 == faces.max() + 1
+    assert result.faces == 12946 and result.vertices == 6475
+    assert result.crease_edges == 875
+    assert set(result.seconds) >= {"load", "segmentation"}
+
+
+def test_options_by_keyword_equal_the_programs(fandisk, tmp_path):
+    faces, _, result = fs.segment(*fandisk, alpha=1.0, crease_angle=180, radius=0)
+    program_faces, _ = program_patches(FANDISK, tmp_path, "--alpha", "1.0", "--crease-angle", "180", "--radius", "0")
+    assert np.array_equal(faces, program_faces)
+    assert result.crease_edges == 0
+
+
+def test_float32_and_int32_arrays_are_accepted(fandisk):
+    v, f = fandisk
+    a, _, _ = fs.segment(v, f)
+    b, _, _ = fs.segment(v.astype(np.float64), f.astype(np.int32))
+    assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("vertices, faces, message", [
+    (np.zeros((4, 2)), np.array([[0, 1, 2]]), "vertices must be an \\(n, 3\\) array"),
+    (np.zeros((4, 3)), np.array([[0, 1]]), "faces must be an \\(m, 3\\) array"),
+    (np.zeros((4, 3)), np.array([[0.0, 1.0, 2.0]]), "faces must hold integers"),
+    (np.array([["a", "b", "c"]]), np.array([[0, 0, 0]]), "vertices must hold numbers"),
+    (np.eye(3), np.array([[0, 1, 3]]), "refers to vertex 3, out of range"),
+    (np.eye(3), np.array([[0, 1, -1]]), "refers to vertex -1"),
+    (np.array([[0, 0, 0], [1, 0, 0], [np.nan, 1, 0]]), np.array([[0, 1, 2]]), "NaN or infinite"),
+])
+def test_bad_arrays_raise_value_error(vertices, faces, message):
+    with pytest.raises(ValueError, match=message):
+        fs.segment(vertices, faces)
+
+
+def test_bad_options_raise(fandisk):
+    with pytest.raises(ValueError, match="alpha expects a finite number"):
+        fs.segment(*fandisk, alpha=float("nan"))
+    with pytest.raises(ValueError, match="radius must be a number in \\[0, 1\\]"):
+        fs.segment(*fandisk, radius=2)
+    with pytest.raises(ValueError, match="solver must be"):
+        fs.segment(*fandisk, solver="magic")
+    with pytest.raises(TypeError, match="unexpected keyword argument 'alpah'"):
+        fs.segment(*fandisk, alpah=0.7)
+
+
+def test_a_mesh_the_library_refuses_raises_value_error():
+    # three triangles on one edge: not a surface
+    v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], dtype=float)
+    f = np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+    with pytest.raises(ValueError):
+        fs.segment(v, f)
+
+
+def test_edits_and_a_save_that_the_program_replays(fandisk, tmp_path):
+    seg = fs.Segmentation(*fandisk)
+    assert seg.patches == 20 and seg.alpha == 0.6
+    assert seg.set_alpha(1.0) == 25
+    patches = seg.face_patches()
+    other = int(np.argmax(patches != patches[0]))
+    assert seg.merge(np.array([0, other])) == 24
+    assert seg.face_patches()[0] == seg.face_patches()[other]
+    everything = np.arange(12946)
+    assert seg.refine(everything, 0.3) >= 24
+    assert seg.coarsen(everything, 0.3) == 24
+    assert seg.undo() and seg.undo()
+    assert seg.patches == 24
+    assert seg.redo() and seg.redo()  # the refine and the coarsen again
+    assert seg.patches == 24
+    assert not seg.redo()
+    assert seg.edits[:2] == ["alpha 1", f"merge faces 0 {other}"]
+    with pytest.raises(ValueError, match="out of range"):
+        seg.merge([0, 12946])
+    with pytest.raises(ValueError, match="faces must be a 1-D array"):
+        seg.refine(np.zeros((2, 2), dtype=int), 0.1)
+    seg.save(str(tmp_path / "saved"))
+    lines = (tmp_path / "saved" / "edits.txt").read_text().splitlines()
+    flags = lines[1].removeprefix("# replay: feature_segmentation MESH ").removesuffix(" --edits edits.txt").split()
+    subprocess.run([PROGRAM, FANDISK, *flags, "--edits", str(tmp_path / "saved" / "edits.txt"), "--output-dir",
+                    str(tmp_path / "replay"), "--quiet"], check=True)
+    assert (tmp_path / "saved" / "face_patches.txt").read_text() == \
+        (tmp_path / "replay" / "face_patches.txt").read_text()
+    assert np.array_equal(np.loadtxt(tmp_path / "saved" / "face_patches.txt", dtype=np.int64), seg.face_patches())
+
+
+def test_sketch_adds_feature_edges(fandisk):
+    v, f = fandisk
+    seg = fs.Segmentation(v, f)
+    before = seg.result().feature_edges
+    seg.sketch(np.array([v[f[0, 0]], v[f[600, 0]]]))
+    assert seg.result().feature_edges > before
+    assert seg.undo() and seg.result().feature_edges == before
+    with pytest.raises(ValueError, match="alpha must be > 1"):
+        seg.sketch(np.array([v[0], v[1]]), alpha=1.0)
+    with pytest.raises(ValueError, match="\\(k, 3\\) array, k >= 2"):
+        seg.sketch(np.array([v[0]]))
+
+
+def test_boundaries_feature_lines_and_creases(fandisk):
+    seg = fs.Segmentation(*fandisk)
+    curves = seg.boundaries()
+    assert curves and all(c.ndim == 2 and c.shape[1] == 3 and len(c) >= 2 for c in curves)
+    raw = seg.boundaries(smooth=False)
+    length = lambda cs: sum(np.linalg.norm(np.diff(c, axis=0), axis=1).sum() for c in cs)
+    assert length(curves) < length(raw)  # the smoothing shortens them
+    lines = seg.feature_lines()
+    assert lines and {line["kind"] for line in lines} <= {"ridge", "valley", "user"}
+    assert seg.creases().shape == (875, 2, 3)
+
+
+def test_threads_segment_at_once_with_the_serial_results():
+    meshes = [fs.read_mesh(os.path.join(MESHES, name)) for name in
+              ["fandisk.off", "rotor.off", "sphere.off", "pinion.off"]]
+    serial = [fs.segment(v, f)[0] for v, f in meshes]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        parallel = list(pool.map(lambda m: fs.segment(*m)[0], meshes * 2))
+    for i, labels in enumerate(parallel):
+        assert np.array_equal(labels, serial[i % 4])
