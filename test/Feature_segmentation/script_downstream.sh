@@ -25,4 +25,26 @@ test -f "$work/prefix/include/CGAL/Feature_segmentation/principal_curvatures.h"
 # the installed headers, not the source tree's, must have been used
 grep -q "$work/prefix/include" "$work/pkg/CMakeFiles/downstream.dir/flags.make"
 "$work/pkg/downstream"
-echo "script_downstream: 2 passed, 0 failed"
+
+# the installed program and Python module (when they were built)
+passed=2
+if [ -x "$FS_BINARY_DIR/demo/Feature_segmentation/feature_segmentation" ]; then
+  "$work/prefix/bin/feature_segmentation" --help > "$work/help.txt" # (grep -q on a pipe: SIGPIPE)
+  grep -q '^Usage: feature_segmentation' "$work/help.txt"
+  test -f "$work/prefix/share/feature_segmentation/editor/index.html"
+  passed=$((passed + 1))
+fi
+if [ -d "$FS_BINARY_DIR/python/feature_segmentation" ]; then
+  echo "== import feature_segmentation from the install prefix"
+  (cd "$work" && PYTHONPATH="$work/prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+import feature_segmentation as fs, numpy as np
+assert fs.__file__.startswith('$work/prefix/'), fs.__file__
+v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
+f = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+faces, vertices, result = fs.segment(v, f)
+assert faces.shape == (4,) and vertices.shape == (4,) and result.faces == 4, result
+print('installed module:', fs.__file__, result)
+")
+  passed=$((passed + 1))
+fi
+echo "script_downstream: $passed passed, 0 failed"
