@@ -4,7 +4,7 @@
 // package's correlation clustering (full vertex graph, geodesic watershed, anisotropic
 // watershed) side by side with CGAL's sharp_edges_segmentation (angle swept) and CGAL's
 // variational shape approximation, on the same meshes and with the metrics of
-// <CGAL/Feature_segmentation/evaluation.h>:
+// evaluation/metrics.h:
 // - every model: patch count, cut cost (Eq. 1, reference weights: alpha 0.6, pruned
 //   lines), coverage of the strong feature lines by the boundaries and redundancy;
 // - models with a ground truth (ABC format: NAME.obj + NAME.yml): boundary precision,

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The segmentation methods the quality evaluation compares, run on one mesh with shared
-// precomputation, and their scores with the metrics of <CGAL/Feature_segmentation/
-// evaluation.h>. Shared by the evaluation program (evaluate_quality) and by the ctest
+// precomputation, and their scores with the metrics of metrics.h. Shared by the evaluation program (evaluate_quality) and by the ctest
 // floors (test_evaluation), so that both measure the same thing.
 //
 // Methods (face labels in the mesh's face order):
@@ -22,7 +21,7 @@
 
 #include <CGAL/Feature_segmentation/crest_lines.h>
 #include <CGAL/Feature_segmentation/edge_weights.h>
-#include <CGAL/Feature_segmentation/evaluation.h>
+#include "metrics.h"
 #include <CGAL/Feature_segmentation/face_patches.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>

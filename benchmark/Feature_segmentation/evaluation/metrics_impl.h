@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The work behind evaluation.h: segments of a mesh extracted as plain double-precision
+// The work behind metrics.h: segments of a mesh extracted as plain double-precision
 // geometry (patch boundaries made of mesh edges, boundary curves on the surface,
 // feature-line pieces), distance queries against a set of
 // segments with CGAL's AABB tree, and the contingency table of two face labellings from

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Quality measures of a mesh segmentation, for benchmarks and regression tests: the cut
+// Quality measures of a mesh segmentation, for the benchmarks and their tests (part of
+// the benchmarks, not of the installed package): the cut
 // cost of Eq. 1 and the patch count; against a ground-truth face labelling, boundary
 // precision, recall and F-score within a distance tolerance, the Rand index and the
 // over- and under-segmentation counts; against the input feature lines, with no ground
@@ -29,7 +30,7 @@
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/input_checks.h>
-#include <CGAL/Feature_segmentation/internal/evaluation_impl.h>
+#include "metrics_impl.h"
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>

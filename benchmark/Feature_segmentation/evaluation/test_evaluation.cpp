@@ -1,4 +1,4 @@
-// Quality metrics (evaluation.h) on hand-computable cases (face labellings and boundary
+// Quality metrics (metrics.h) on hand-computable cases (face labellings and boundary
 // curves), the YAML reader of the ground-truth format, and quality floors, without and
 // with boundary smoothing: on fandisk always, on the ABC model when the shared data
 // folder is present ($FEATURE_SEGMENTATION_DATA, else ../shared/data beside the clone).
@@ -6,11 +6,11 @@
 // loss of segmentation quality fails the build.
 #include <boost/test/unit_test.hpp>
 
-#include <CGAL/Feature_segmentation/evaluation.h>
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
 
-#include "../../benchmark/Feature_segmentation/evaluation/abc_ground_truth.h"
-#include "../../benchmark/Feature_segmentation/evaluation/methods.h"
+#include "abc_ground_truth.h"
+#include "methods.h"
+#include "metrics.h"
 #include "test_meshes.h"
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
