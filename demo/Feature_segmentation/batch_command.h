@@ -150,7 +150,7 @@ inline void write_batch_summary(const std::filesystem::path& dir, const std::vec
     os << "mesh,output,faces,patches,cut_cost,seconds,status,error\n";
     for(const Batch_row& r : rows)
       os << internal::csv_field(r.mesh) << ',' << internal::csv_field(r.output) << ',' << r.faces << ','
-         << r.patches << ',' << json_number(r.cut_cost) << ',' << json_number(r.seconds, 6) << ',' << r.status << ','
+         << r.patches << ',' << number_text(r.cut_cost) << ',' << number_text(r.seconds) << ',' << r.status << ','
          << internal::csv_field(r.error) << '\n';
   });
   write_file(dir / "batch_summary.jsonl", [&](std::ostream& os) {

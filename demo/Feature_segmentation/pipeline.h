@@ -32,9 +32,12 @@
 
 #include <boost/range/counting_range.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <unistd.h> // getpid: names of temporary output files
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -101,48 +104,13 @@ private:
   std::vector<std::pair<std::string, double> > m_seconds;
 };
 
-inline std::string json_string(const std::string& s)
+/// The shortest text that reads back as `x` (0.6, not 0.59999999999999998): numbers of
+/// the batch table and of messages.
+inline std::string number_text(double x)
 {
-  std::ostringstream os;
-  os << '"';
-  for(unsigned char c : s)
-  {
-    switch(c)
-    {
-      case '"': os << "\\\""; break;
-      case '\\': os << "\\\\"; break;
-      case '\n': os << "\\n"; break;
-      case '\t': os << "\\t"; break;
-      case '\r': os << "\\r"; break;
-      default:
-        if(c < 0x20)
-          os << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
-        else
-          os << c;
-    }
-  }
-  os << '"';
-  return os.str();
-}
-
-// `digits` significant digits; by default the fewest that read back as `x` (0.6, not
-// 0.59999999999999998), which is as deterministic as a fixed count.
-inline std::string json_number(double x, int digits = 0)
-{
-  std::ostringstream os;
-  if(digits > 0)
-  {
-    os << std::setprecision(digits) << x;
-    return os.str();
-  }
-  for(int d = 1;; ++d)
-  {
-    os.str(std::string());
-    os << std::setprecision(d) << x;
-    if(d >= std::numeric_limits<double>::max_digits10 ||
-       std::strtod(os.str().c_str(), nullptr) == x)
-      return os.str();
-  }
+  char buffer[32];
+  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, r.ptr);
 }
 
 // The solver chosen with --solver, timed on its own: the segmentation stage also builds
@@ -209,109 +177,93 @@ struct Results
 };
 
 inline void write_summary(std::ostream& os, const Options& options, const Results& r,
-                   const std::vector<std::pair<std::string, double> >& seconds)
+                          const std::vector<std::pair<std::string, double> >& seconds)
 {
-  const double threshold = options.strength_threshold ? *options.strength_threshold
-                                                      : FS::default_strength_threshold;
-  os << "{\n"
-     << "  \"program\": \"" << program_name << "\",\n"
-     << "  \"input\": " << json_string(options.input) << ",\n"
-     << "  \"options\": {\n"
-     << "    \"rings\": " << options.rings << ",\n"
-     << "    \"radius\": " << json_number(options.radius) << ",\n"
-     << "    \"strength_threshold\": " << json_number(threshold) << ",\n"
-     << "    \"ridges\": " << (options.ridges ? "true" : "false") << ",\n"
-     << "    \"valleys\": " << (options.valleys ? "true" : "false") << ",\n"
-     << "    \"feature_edges_file\": "
-     << (options.feature_edges_file.empty() ? std::string("null")
-                                            : json_string(options.feature_edges_file)) << ",\n"
-     << "    \"alpha\": " << json_number(options.alpha) << ",\n"
-     << "    \"gamma\": " << json_number(options.gamma) << ",\n"
-     << "    \"crease_angle\": " << json_number(options.crease_angle) << ",\n"
-     << "    \"crease_filter\": " << options.crease_filter << ",\n"
-     << "    \"full_graph\": " << (options.full_graph ? "true" : "false") << ",\n"
-     << "    \"watershed\": " << json_string(options.watershed) << ",\n"
-     << "    \"edits_file\": "
-     << (options.edits_file.empty() ? std::string("null") : json_string(options.edits_file)) << ",\n"
-     << "    \"smoothing_iterations\": "
-     << (options.smoothing_iterations ? *options.smoothing_iterations : default_smoothing_iterations) << ",\n"
-     << "    \"solver\": " << json_string(options.solver) << "\n"
-     << "  },\n"
-     << "  \"input_file\": {\n"
-     << "    \"format\": " << json_string(r.read_report.format) << ",\n"
-     << "    \"vertices\": " << r.read_report.number_of_file_points << ",\n"
-     << "    \"faces\": " << r.read_report.number_of_file_faces << ",\n"
-     << "    \"removed_vertices\": " << r.read_report.number_of_merged_points << ",\n"
-     << "    \"removed_faces\": " << r.read_report.number_of_removed_faces << ",\n"
-     << "    \"duplicated_vertices\": " << r.read_report.number_of_duplicated_points << ",\n"
-     << "    \"triangulated_faces\": " << r.read_report.number_of_triangulated_faces << "\n"
-     << "  },\n"
-     << "  \"mesh\": {\n"
-     << "    \"vertices\": " << r.number_of_vertices << ",\n"
-     << "    \"edges\": " << r.number_of_edges << ",\n"
-     << "    \"faces\": " << r.number_of_faces << ",\n"
-     << "    \"border_edges\": " << r.read_report.number_of_border_edges << "\n"
-     << "  },\n"
-     << "  \"feature_lines\": {\n"
-     << "    \"total\": " << r.number_of_lines << ",\n"
-     << "    \"ridges\": " << r.number_of_ridges << ",\n"
-     << "    \"valleys\": " << r.number_of_valleys << ",\n"
-     << "    \"user\": " << r.number_of_user_lines << "\n"
-     << "  },\n"
-     << "  \"feature_edges\": " << r.number_of_feature_edges << ",\n"
-     << "  \"crease_edges\": " << r.number_of_crease_edges << ",\n"
-     << "  \"segmentation\": {\n"
-     << "    \"patches\": " << r.number_of_patches << ",\n"
-     << "    \"cut_cost\": " << json_number(r.cut_cost) << ",\n"
-     << "    \"automatic_patches\": " << r.number_of_automatic_patches << ",\n"
-     << "    \"automatic_cut_cost\": " << json_number(r.automatic_cut_cost) << ",\n"
-     << "    \"oversegments\": " << r.number_of_oversegments << ",\n"
-     << "    \"solver_seconds\": " << json_number(r.solver_seconds, 6) << "\n"
-     << "  },\n";
-  // One edit per line, so that a line-based tool reads them.
-  os << "  \"edits\": [";
-  for(std::size_t i = 0; i < r.edits.size(); ++i)
+  typedef nlohmann::ordered_json Json;
+  auto text_or_null = [](const std::string& s) { return s.empty() ? Json(nullptr) : Json(s); };
+  Json edits = Json::array();
+  for(const Edit_record& e : r.edits)
   {
-    const fs_demo::Edit_record& e = r.edits[i];
-    os << (i == 0 ? "\n" : ",\n") << "    {\"line\": " << e.line << ", \"verb\": " << json_string(e.verb)
-       << ", \"patches\": " << e.patches << ", \"cut_cost\": " << json_number(e.cut_cost);
-    if(e.verb == "undo")
-      os << ", \"undone_line\": " << e.undone_line;
-    else if(e.verb == "redo")
-      os << ", \"redone_line\": " << e.redone_line;
-    else if(e.verb == "sketch")
-      os << ", \"points\": " << e.points;
-    else if(e.verb != "alpha")
-      os << ", \"faces\": " << e.faces;
-    os << ", \"seconds\": " << json_number(e.seconds, 6)
-       << ", \"solver_seconds\": " << json_number(e.solver_seconds, 6)
-       << ", \"prepare_seconds\": " << json_number(e.prepare_seconds, 6) << "}";
+    Json j{{"line", e.line}, {"verb", e.verb}, {"patches", e.patches}, {"cut_cost", e.cut_cost}};
+    if(e.verb == "undo") j["undone_line"] = e.undone_line;
+    else if(e.verb == "redo") j["redone_line"] = e.redone_line;
+    else if(e.verb == "sketch") j["points"] = e.points;
+    else if(e.verb != "alpha") j["faces"] = e.faces;
+    j["seconds"] = e.seconds;
+    j["solver_seconds"] = e.solver_seconds;
+    j["prepare_seconds"] = e.prepare_seconds;
+    edits.push_back(j);
   }
-  os << (r.edits.empty() ? "],\n" : "\n  ],\n")
-     << "  \"boundaries\": {\n"
-     << "    \"curves\": " << r.number_of_curves << ",\n"
-     << "    \"junctions\": " << r.number_of_junctions << ",\n"
-     << "    \"length_before\": " << json_number(r.length_before) << ",\n"
-     << "    \"length_after\": " << json_number(r.length_after) << ",\n"
-     << "    \"anisotropic_length_before\": " << json_number(r.anisotropic_length_before) << ",\n"
-     << "    \"anisotropic_length_after\": " << json_number(r.anisotropic_length_after) << ",\n"
-     << "    \"smoothing_iterations\": " << r.smoothing_iterations_run << ",\n"
-     << "    \"vertex_moves\": " << r.smoothing_vertex_moves << ",\n"
-     << "    \"smoothing_seconds\": " << json_number(r.smoothing_seconds, 6) << ",\n"
-     << "    \"refined_vertices\": " << r.number_of_refined_vertices << ",\n"
-     << "    \"refined_faces\": " << r.number_of_refined_faces << ",\n"
-     << "    \"split_faces\": " << r.number_of_split_faces << "\n"
-     << "  },\n"
-     << "  \"seconds\": {\n";
+  Json stages = Json::object();
   double total = 0;
   for(const auto& s : seconds)
   {
-    os << "    " << json_string(s.first) << ": " << json_number(s.second, 6) << ",\n";
+    stages[s.first] = s.second;
     total += s.second;
   }
-  os << "    \"total\": " << json_number(total, 6) << "\n"
-     << "  }\n"
-     << "}\n";
+  stages["total"] = total;
+  const Json summary{
+    {"program", program_name},
+    {"input", options.input},
+    {"options",
+     {{"rings", options.rings},
+      {"radius", options.radius},
+      {"strength_threshold", options.strength_threshold ? *options.strength_threshold : FS::default_strength_threshold},
+      {"ridges", options.ridges},
+      {"valleys", options.valleys},
+      {"feature_edges_file", text_or_null(options.feature_edges_file)},
+      {"alpha", options.alpha},
+      {"gamma", options.gamma},
+      {"crease_angle", options.crease_angle},
+      {"crease_filter", options.crease_filter},
+      {"full_graph", options.full_graph},
+      {"watershed", options.watershed},
+      {"edits_file", text_or_null(options.edits_file)},
+      {"smoothing_iterations", options.smoothing_iterations ? *options.smoothing_iterations : default_smoothing_iterations},
+      {"solver", options.solver}}},
+    {"input_file",
+     {{"format", r.read_report.format},
+      {"vertices", r.read_report.number_of_file_points},
+      {"faces", r.read_report.number_of_file_faces},
+      {"removed_vertices", r.read_report.number_of_merged_points},
+      {"removed_faces", r.read_report.number_of_removed_faces},
+      {"duplicated_vertices", r.read_report.number_of_duplicated_points},
+      {"triangulated_faces", r.read_report.number_of_triangulated_faces}}},
+    {"mesh",
+     {{"vertices", r.number_of_vertices},
+      {"edges", r.number_of_edges},
+      {"faces", r.number_of_faces},
+      {"border_edges", r.read_report.number_of_border_edges}}},
+    {"feature_lines",
+     {{"total", r.number_of_lines},
+      {"ridges", r.number_of_ridges},
+      {"valleys", r.number_of_valleys},
+      {"user", r.number_of_user_lines}}},
+    {"feature_edges", r.number_of_feature_edges},
+    {"crease_edges", r.number_of_crease_edges},
+    {"segmentation",
+     {{"patches", r.number_of_patches},
+      {"cut_cost", r.cut_cost},
+      {"automatic_patches", r.number_of_automatic_patches},
+      {"automatic_cut_cost", r.automatic_cut_cost},
+      {"oversegments", r.number_of_oversegments},
+      {"solver_seconds", r.solver_seconds}}},
+    {"edits", edits},
+    {"boundaries",
+     {{"curves", r.number_of_curves},
+      {"junctions", r.number_of_junctions},
+      {"length_before", r.length_before},
+      {"length_after", r.length_after},
+      {"anisotropic_length_before", r.anisotropic_length_before},
+      {"anisotropic_length_after", r.anisotropic_length_after},
+      {"smoothing_iterations", r.smoothing_iterations_run},
+      {"vertex_moves", r.smoothing_vertex_moves},
+      {"smoothing_seconds", r.smoothing_seconds},
+      {"refined_vertices", r.number_of_refined_vertices},
+      {"refined_faces", r.number_of_refined_faces},
+      {"split_faces", r.number_of_split_faces}}},
+    {"seconds", stages}};
+  os << summary.dump(2) << '\n';
 }
 
 // Writes a file through `write`, atomically: into a temporary file next to it, renamed

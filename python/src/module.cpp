@@ -375,7 +375,7 @@ PYBIND11_MODULE(_core, m)
     .def_readonly("crease_edges", &Result::crease_edges, "crease edges")
     .def_readonly("seconds", &Result::seconds, "seconds per stage (load, segmentation, ...)")
     .def("__repr__", [](const Result& r) {
-      return "Result(patches=" + std::to_string(r.patches) + ", cut_cost=" + json_number(r.cut_cost) +
+      return "Result(patches=" + std::to_string(r.patches) + ", cut_cost=" + number_text(r.cut_cost) +
              ", faces=" + std::to_string(r.faces) + ")";
     });
 

@@ -59,7 +59,7 @@ check "fandisk: 12946 faces and 20 patches, as the program gives" [ "$(field 2 3
 "$program" "$FS_MESH_DIR/rotor.off" --output-dir "$work/single_rotor" --quiet
 check "rotor: the batch's face_patches.txt equals the program's" \
   cmp -s "$work/out/rotor/face_patches.txt" "$work/single_rotor/face_patches.txt"
-single_patches="$(grep -m1 '"patches"' "$work/single_rotor/summary.json" | tr -dc 0-9)"
+single_patches="$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["segmentation"]["patches"])' "$work/single_rotor/summary.json")"
 check "rotor: the table's patches equal the program's ($single_patches)" [ "$(field 3 4)" = "$single_patches" ]
 
 # resumption: complete outputs skipped, the failures tried again
