@@ -9,6 +9,7 @@ packages=(
   libcgal-demo     # /usr/share/doc/libcgal-dev/data.tar.gz: fandisk and the other CAD meshes
   libboost-graph-dev libboost-test-dev
   libeigen3-dev
+  libtbb-dev       # threads (concurrency_tag, --threads)
   doxygen
   ccache
   clang libclang-rt-14-dev   # libFuzzer and the sanitizers (fuzz targets in the test command)

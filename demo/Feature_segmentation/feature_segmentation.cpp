@@ -21,7 +21,12 @@
 #include <iomanip>
 #include <iostream>
 #include <new>
+#include <optional>
 #include <string>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 namespace {
 
@@ -55,6 +60,12 @@ int main(int argc, char** argv)
     print_usage(std::cout);
     return EXIT_SUCCESS;
   }
+#ifdef CGAL_LINKED_WITH_TBB
+  // --threads N bounds TBB's threads for the whole run (0: TBB's default, all cores)
+  std::optional<tbb::global_control> thread_limit;
+  if(options.threads > 0)
+    thread_limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+#endif
   try
   {
     if(options.command == Command::EDIT)

@@ -220,7 +220,8 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
       {"watershed", options.watershed},
       {"edits_file", text_or_null(options.edits_file)},
       {"smoothing_iterations", options.smoothing_iterations ? *options.smoothing_iterations : default_smoothing_iterations},
-      {"solver", options.solver}}},
+      {"solver", options.solver},
+      {"threads", options.threads}}},
     {"input_file",
      {{"format", r.read_report.format},
       {"vertices", r.read_report.number_of_file_points},
@@ -371,6 +372,7 @@ public:
                           .detect_valleys(options.valleys)
                           .solver(Timed_solver(options.solver, last_solver_seconds))
                           .use_oversegmentation(!options.full_graph)
+                        .concurrency_tag(CGAL::Parallel_if_available_tag())
                           .watershed_distance(options.watershed == "geodesic" ? FS::Watershed_distance::GEODESIC
                                                                               : FS::Watershed_distance::ANISOTROPIC);
     if(!options.feature_edges_file.empty())
@@ -378,7 +380,9 @@ public:
       auto curvature_map =
         mesh.add_property_map<Mesh::Vertex_index, FS::Principal_curvatures<K> >("v:fs_principal_curvatures").first;
       timer.run("curvature", [&]() {
-        FS::estimate_principal_curvatures(mesh, curvature_map, FS::parameters::neighborhood_rings(options.rings).neighborhood_radius(options.radius));
+        FS::estimate_principal_curvatures(mesh, curvature_map, FS::parameters::neighborhood_rings(options.rings)
+                                                               .neighborhood_radius(options.radius)
+                                                               .concurrency_tag(CGAL::Parallel_if_available_tag()));
       });
       FS::Feature_lines<Mesh> lines = timer.run("feature_lines", [&]() {
         FS::Feature_lines<Mesh> detected;

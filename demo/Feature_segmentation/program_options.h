@@ -56,6 +56,8 @@ struct Options
   // once; whether meshes with complete outputs are done again.
   std::vector<std::string> inputs;
   int jobs = 1;
+  // threads of the parallel stages (0: all cores)
+  int threads = 0;
   bool force = false;
   std::string input = std::string(FS_MESH_DIR) + "/fandisk.off";
   std::string output_dir = "feature_segmentation_output";
@@ -189,6 +191,9 @@ inline void print_usage(std::ostream& os)
      << "                            0.0.0.0 opens the editor to the network)\n"
      << "  --web-root DIR            edit: the folder of the editor's page (default: the\n"
      << "                            one installed with the program)\n"
+     << "  --threads N               threads of the parallel stages (the curvature fits),\n"
+     << "                            0 .. 1024; 0: all cores; the result is the same at any\n"
+     << "                            count (default: 0)\n"
      << "  --jobs N                  batch: meshes segmented at once, 1 .. 1024 (default: 1)\n"
      << "  --force                   batch: segment again meshes whose outputs are complete\n"
      << "  --help                    print this help and exit\n"
@@ -405,6 +410,13 @@ inline Options parse_command_line(int argc, char** argv)
         options.host = text;
       else
         options.web_root = text;
+    }
+    else if(arg == "--threads")
+    {
+      const std::string text = take_value();
+      options.threads = parse_int(arg, text);
+      if(options.threads < 0 || options.threads > 1024)
+        throw Usage_error("--threads must be an integer in 0 .. 1024 (got " + text + ")");
     }
     else if(arg == "--jobs")
     {

@@ -607,6 +607,16 @@ expect_error() {
   echo "  $name: $last"
 }
 
+# Threads: the same outputs at 1, 2 and 8 threads as at the default (all cores).
+for n in 1 2 8; do
+  run "threads$n" "$fandisk" --output-dir "$work/threads$n" --threads "$n" --quiet
+  check "--threads $n: exit status 0" [ "$rc" -eq 0 ]
+  check "--threads $n: the same face_patches.txt as the default run" \
+    cmp -s "$work/threads$n/face_patches.txt" "$out/face_patches.txt"
+  check "--threads $n: the same boundaries as the default run" \
+    cmp -s "$work/threads$n/boundaries.polylines.txt" "$out/boundaries.polylines.txt"
+done
+
 echo "bad-input cases (name: message; bad mesh files are in script_bad_inputs.sh):"
 expect_error rings_zero             2 '--rings'                     "$fandisk" --rings 0
 expect_error rings_negative         2 '--rings'                     "$fandisk" --rings -3
@@ -648,6 +658,7 @@ expect_error edits_face_range       1 'face_range\.edits:1: faces: face index 12
 expect_error edits_face_negative    1 "face_negative\.edits:1: faces: '-1' is not a face index" "$fandisk" --edits "$bad/face_negative.edits"
 expect_error edits_redo             1 'redo\.edits:4: redo: no undone edit to redo' "$fandisk" --edits "$bad/redo.edits"
 expect_error edits_triangle_range   1 'triangle_range\.edits:1: triangles: face index 12946 is out of range \(the mesh has 12946 triangles\)' "$fandisk" --edits "$bad/triangle_range.edits"
+expect_error threads_negative       2 '--threads must be an integer in 0 \.\. 1024' "$fandisk" --threads -1
 expect_error port_outside_edit      2 "--port is an option of 'edit'" "$fandisk" --port 8080
 expect_error edit_port_range        2 '--port must be an integer in 0 \.\. 65535' edit "$fandisk" --port 70000
 expect_error edit_web_root          1 "the editor's web page is not found" edit "$fandisk" --web-root "$bad/no_such_folder"

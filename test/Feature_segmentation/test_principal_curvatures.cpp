@@ -12,8 +12,15 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace FS = CGAL::Feature_segmentation;
@@ -187,5 +194,36 @@ BOOST_AUTO_TEST_CASE(rejects_bad_rings)
   BOOST_CHECK_THROW(FS::estimate_principal_curvatures(m, cmap, FS::parameters::neighborhood_rings(0)),
                     FS::Invalid_input);
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// The parallel fit (concurrency_tag Parallel_tag) gives, at 1, 2 and 8 threads, exactly
+// the sequential curvatures: every vertex's fit is its own, whatever thread runs it.
+BOOST_AUTO_TEST_CASE(parallel_fits_equal_the_sequential_ones_at_any_thread_count)
+{
+  SM m;
+  BOOST_REQUIRE(CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m));
+  typedef FS::Principal_curvatures<Epick> PC;
+  auto estimate = [&](auto tag) {
+    auto map = m.add_property_map<SM::Vertex_index, PC>("v:fs_pc").first;
+    FS::estimate_principal_curvatures(m, map, FS::parameters::concurrency_tag(tag));
+    std::vector<PC> out;
+    for(SM::Vertex_index v : m.vertices()) out.push_back(map[v]);
+    m.remove_property_map(map);
+    return out;
+  };
+  const std::vector<PC> sequential = estimate(CGAL::Sequential_tag());
+  for(std::size_t threads : {1u, 2u, 8u})
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const std::vector<PC> parallel = estimate(CGAL::Parallel_tag());
+    std::size_t different = 0;
+    for(std::size_t i = 0; i < sequential.size(); ++i)
+      if(parallel[i].k1 != sequential[i].k1 || parallel[i].k2 != sequential[i].k2 ||
+         parallel[i].d1 != sequential[i].d1 || parallel[i].dk1 != sequential[i].dk1)
+        ++different;
+    BOOST_TEST(different == 0u, threads << " threads: " << different << " vertices differ");
+  }
+}
+#endif
 
 BOOST_AUTO_TEST_SUITE_END()

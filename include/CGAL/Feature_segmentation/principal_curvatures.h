@@ -14,8 +14,10 @@
 #include <CGAL/Feature_segmentation/internal/curvature_fitting.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
 #include <cmath>
+#include <type_traits>
 
 namespace CGAL {
 namespace Feature_segmentation {
@@ -104,6 +106,11 @@ constexpr double default_neighborhood_radius = 0.01;
 ///   - `neighborhood_rings` (unsigned int, at least 1): default 2
 ///   - `neighborhood_radius` (double in [0, 1], a fraction of the bounding box diagonal;
 ///     0: rings only): default `default_neighborhood_radius`
+///   - `concurrency_tag` (`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///     `CGAL::Parallel_if_available_tag`): with `CGAL::Parallel_tag` the vertices are
+///     fitted by TBB's threads (the program must link TBB, e.g. `CGAL::TBB_support`;
+///     `tbb::global_control` bounds their number); the result is the same at any
+///     thread count. Default `CGAL::Sequential_tag`
 template <typename TriangleMesh, typename VertexCurvatureMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void estimate_principal_curvatures(const TriangleMesh& tm,
@@ -128,8 +135,16 @@ void estimate_principal_curvatures(const TriangleMesh& tm,
 
   check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
 
+  typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
+    get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
+  constexpr bool parallel = std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value;
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!parallel, "concurrency_tag(CGAL::Parallel_tag()) needs TBB (CGAL_LINKED_WITH_TBB)");
+#endif
+
   internal::Curvature_fitting<TriangleMesh, VPM, GT> fitting(tm, vpm);
-  fitting.estimate(static_cast<unsigned int>(rings), radius * fitting.geometry().bounding_box_diagonal());
+  fitting.estimate(static_cast<unsigned int>(rings), radius * fitting.geometry().bounding_box_diagonal(),
+                   parallel);
   fitting.write(curvature_map);
 }
 

@@ -11,7 +11,15 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <CGAL/use.h>
+
 #include <Eigen/Dense>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#endif
 
 #include <array>
 #include <cmath>
@@ -151,17 +159,34 @@ public:
   // The most neighbours a fit takes (see collect_neighborhood()).
   static constexpr std::size_t max_fit_points = 32;
 
-  void estimate(unsigned int rings, double radius = 0.)
+  // `parallel`: the vertices are fitted by TBB's threads (CGAL_LINKED_WITH_TBB), each
+  // with its own work space; every vertex's fit is the same at any thread count.
+  void estimate(unsigned int rings, double radius = 0., bool parallel = false)
   {
     const std::size_t nv = m_idx.number_of_vertices();
     m_curv.assign(nv, Vertex_curvature());
     build_adjacency();
-    std::vector<std::size_t> stamp(nv, std::size_t(-1));
-    std::vector<std::size_t> neighborhood;
-    for(std::size_t v = 0; v < nv; ++v)
+    auto fit_range = [&](std::size_t first, std::size_t last, Work_space& ws) {
+      if(ws.stamp.size() != nv) ws.stamp.assign(nv, std::size_t(-1));
+      for(std::size_t v = first; v < last; ++v)
+      {
+        collect_neighborhood(v, rings, radius * radius, ws.stamp, ws.neighborhood);
+        fit_vertex(v, ws.neighborhood, ws);
+      }
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel)
     {
-      collect_neighborhood(v, rings, radius * radius, stamp, neighborhood);
-      fit_vertex(v, neighborhood);
+      tbb::enumerable_thread_specific<Work_space> spaces;
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 512),
+                        [&](const tbb::blocked_range<std::size_t>& r) { fit_range(r.begin(), r.end(), spaces.local()); });
+    }
+    else
+#endif
+    {
+      CGAL_USE(parallel);
+      Work_space ws;
+      fit_range(0, nv, ws);
     }
     extremality();
   }
@@ -262,7 +287,16 @@ private:
   // Least-squares fit of z = A/2 x^2 + B xy + C/2 y^2 + D x^3 + E x^2 y + F x y^2 + G y^3
   // to neighbour positions (one equation each) and normals (two equations each) in the
   // frame of the vertex normal, in coordinates scaled by the neighbourhood size.
-  void fit_vertex(std::size_t v, const std::vector<std::size_t>& nbh)
+  // The work space of one thread: the visit stamps and neighbourhood of
+  // collect_neighborhood(), the least-squares rows of fit_vertex().
+  struct Work_space
+  {
+    std::vector<std::size_t> stamp, neighborhood;
+    Eigen::Matrix<double, Eigen::Dynamic, 7> rows;
+    Eigen::VectorXd rhs;
+  };
+
+  void fit_vertex(std::size_t v, const std::vector<std::size_t>& nbh, Work_space& ws)
   {
     const Vec3& n = m_geom.vertex_normals[v];
     if(n.squaredNorm() == 0 || nbh.size() < 2)
@@ -279,31 +313,31 @@ private:
     const int nu = cubic ? 7 : 3;
     // rows of the least-squares system (one per position, two per usable normal),
     // multiplied out at once: A^T A as a symmetric rank update
-    m_rows.resize(Eigen::Index(3 * nbh.size()), 7);
-    m_rhs.resize(Eigen::Index(3 * nbh.size()));
+    ws.rows.resize(Eigen::Index(3 * nbh.size()), 7);
+    ws.rhs.resize(Eigen::Index(3 * nbh.size()));
     Eigen::Index r = 0;
     for(std::size_t q : nbh)
     {
       const Vec3 d = (m_geom.points[q] - p0) / h;
       const double x = d.dot(u), y = d.dot(w), z = d.dot(n);
-      m_rows.row(r) << 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y;
-      m_rhs(r++) = z;
+      ws.rows.row(r) << 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+      ws.rhs(r++) = z;
       const Vec3& nq = m_geom.vertex_normals[q];
       const double nz = nq.dot(n);
       if(nz > 0.2) // normals folded past ~78 degrees say nothing reliable about slopes
       {
-        m_rows.row(r) << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
-        m_rhs(r++) = -nq.dot(u) / nz;
-        m_rows.row(r) << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
-        m_rhs(r++) = -nq.dot(w) / nz;
+        ws.rows.row(r) << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
+        ws.rhs(r++) = -nq.dot(u) / nz;
+        ws.rows.row(r) << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
+        ws.rhs(r++) = -nq.dot(w) / nz;
       }
     }
-    const auto A = m_rows.topRows(r);
-    if(!cubic) m_rows.topRows(r).rightCols<4>().setZero();
+    const auto A = ws.rows.topRows(r);
+    if(!cubic) ws.rows.topRows(r).template rightCols<4>().setZero();
     Eigen::Matrix<double, 7, 7> AtA = Eigen::Matrix<double, 7, 7>::Zero();
     AtA.selfadjointView<Eigen::Lower>().rankUpdate(A.transpose());
     AtA.triangularView<Eigen::StrictlyUpper>() = AtA.transpose();
-    const Eigen::Matrix<double, 7, 1> Atb = A.transpose() * m_rhs.head(r);
+    const Eigen::Matrix<double, 7, 1> Atb = A.transpose() * ws.rhs.head(r);
     // A small ridge term keeps the system well posed when the neighbourhood is nearly
     // collinear; it is negligible against the data term otherwise.
     const double lambda = 1e-9 * std::max(1e-300, AtA.trace());
@@ -362,8 +396,6 @@ private:
   Mesh_geometry<TriangleMesh, VPM> m_geom;
   std::vector<Vertex_curvature> m_curv;
   std::vector<std::size_t> m_adj_begin, m_adj;
-  Eigen::Matrix<double, Eigen::Dynamic, 7> m_rows; // work space of fit_vertex
-  Eigen::VectorXd m_rhs;
 };
 
 } // namespace internal

@@ -8,6 +8,7 @@
 FS_add_named_parameter(neighborhood_rings_t, neighborhood_rings, neighborhood_rings)
 FS_add_named_parameter(neighborhood_radius_t, neighborhood_radius, neighborhood_radius)
 FS_add_named_parameter(principal_curvature_map_t, principal_curvature_map, principal_curvature_map)
+FS_add_named_parameter(concurrency_tag_t, concurrency_tag, concurrency_tag)
 
 // Crest lines (crest_lines.h)
 FS_add_named_parameter(strength_threshold_t, strength_threshold, strength_threshold)
