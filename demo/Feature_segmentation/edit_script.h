@@ -29,6 +29,7 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
 #define CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
 
+#include "number_text.h"
 #include "read_input_mesh.h"
 
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
@@ -43,7 +44,6 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -301,23 +301,10 @@ inline void check_face_indices(const Edit_script& script, std::size_t number_of_
   }
 }
 
-namespace internal {
-
-// The shortest text that reads back as `x` (0.85, not 0.84999999999999998).
-inline std::string script_number_text(double x)
-{
-  char buffer[32];
-  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, r.ptr);
-}
-
-} // namespace internal
-
 /// Writes `edits` as a script that `read_edit_script()` reads back to the same edits
 /// (every number in the shortest form that reads back exactly).
 inline void write_edit_script(std::ostream& os, const std::vector<Script_edit>& edits)
 {
-  using internal::script_number_text;
   for(const Script_edit& e : edits)
   {
     const bool coarsen = e.verb == "coarsen";
@@ -326,25 +313,36 @@ inline void write_edit_script(std::ostream& os, const std::vector<Script_edit>& 
     {
       const Script_region& r = e.region;
       if(r.kind == Script_region::BALL)
-        os << " ball " << script_number_text(r.center[0]) << ' ' << script_number_text(r.center[1]) << ' '
-           << script_number_text(r.center[2]) << ' ' << script_number_text(r.radius);
+        os << " ball " << number_text(r.center[0]) << ' ' << number_text(r.center[1]) << ' '
+           << number_text(r.center[2]) << ' ' << number_text(r.radius);
       else
       {
         os << (r.kind == Script_region::FILE_FACES ? " faces" : " triangles");
         for(std::size_t f : r.faces) os << ' ' << f;
       }
-      if(e.verb != "merge") os << ' ' << script_number_text(coarsen ? -e.value : e.value);
+      if(e.verb != "merge") os << ' ' << number_text(coarsen ? -e.value : e.value);
     }
     else if(e.verb == "alpha")
-      os << ' ' << script_number_text(e.value);
+      os << ' ' << number_text(e.value);
     else if(e.verb == "sketch")
     {
-      os << " alpha " << script_number_text(e.value);
+      os << " alpha " << number_text(e.value);
       for(const std::array<double, 3>& p : e.points)
-        os << ' ' << script_number_text(p[0]) << ' ' << script_number_text(p[1]) << ' ' << script_number_text(p[2]);
+        os << ' ' << number_text(p[0]) << ' ' << number_text(p[1]) << ' ' << number_text(p[2]);
     }
     os << '\n';
   }
+}
+
+/// `edits` as script lines (what write_edit_script() writes, a line each).
+inline std::vector<std::string> edit_script_lines(const std::vector<Script_edit>& edits)
+{
+  std::ostringstream os;
+  write_edit_script(os, edits);
+  std::vector<std::string> lines;
+  std::istringstream in(os.str());
+  for(std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
 }
 
 /// What one edit did, for the summary.
@@ -381,6 +379,10 @@ public:
     : m_mesh(mesh), m_correspondence(correspondence), m_segmentation(segmentation),
       m_solver_seconds(solver_seconds)
   {}
+
+  /// The edits an `undo` line would take back, and those a `redo` line would make again.
+  std::size_t number_of_undoable_edits() const { return m_done.size(); }
+  std::size_t number_of_redoable_edits() const { return m_undone.size(); }
 
   /// Applies `e`.
   /// \throws Edit_script_error if the library refuses the edit

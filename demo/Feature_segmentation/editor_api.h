@@ -274,48 +274,23 @@ public:
   std::string features() const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    const auto& seg = *m_run->pipeline.segmentation;
-    const Mesh& wm = seg.working_mesh();
+    const Pipeline& p = m_run->pipeline;
     nlohmann::json ridges = nlohmann::json::array(), valleys = nlohmann::json::array(),
                    user = nlohmann::json::array();
-    for(const auto& line : seg.feature_lines().lines)
-    {
-      std::vector<double> xyz;
-      for(const auto& p : line.points)
-      {
-        const K::Point_3 q = p.point(wm, get(CGAL::vertex_point, wm));
-        xyz.insert(xyz.end(), {q.x(), q.y(), q.z()});
-      }
-      if(line.is_closed && !line.points.empty()) xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3);
+    for(const auto& line : p.segmentation->feature_lines().lines)
       (line.type == FS::Feature_line_type::RIDGE ? ridges
-       : line.type == FS::Feature_line_type::VALLEY ? valleys : user).push_back(xyz);
-    }
-    const Mesh& m = m_run->pipeline.mesh;
-    std::vector<double> creases;
-    for(Mesh::Edge_index e : m.edges())
-      if(seg.is_crease_edge(e))
-        for(Mesh::Vertex_index v : {m.source(m.halfedge(e)), m.target(m.halfedge(e))})
-          creases.insert(creases.end(), {m.point(v).x(), m.point(v).y(), m.point(v).z()});
-    return nlohmann::json{{"ridges", ridges}, {"valleys", valleys}, {"user", user}, {"creases", creases}}.dump();
+       : line.type == FS::Feature_line_type::VALLEY ? valleys : user).push_back(p.line_coordinates(line));
+    return nlohmann::json{{"ridges", ridges}, {"valleys", valleys}, {"user", user}, {"creases", p.crease_segments()}}
+      .dump();
   }
 
   /// The patch boundaries, smoothed as the outputs are (`smooth`) or not.
   std::string boundaries(bool smooth) const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    FS::Patch_boundaries<Mesh> b = m_run->pipeline.segmentation->patch_boundaries();
-    if(smooth)
-      FS::smooth_patch_boundaries(b, FS::parameters::smoothing_iterations(
-                                       m_run->options.smoothing_iterations ? *m_run->options.smoothing_iterations
-                                                                      : default_smoothing_iterations));
+    const FS::Patch_boundaries<Mesh> b = m_run->pipeline.boundaries(smooth);
     nlohmann::json curves = nlohmann::json::array();
-    for(const auto& c : b.curves())
-    {
-      std::vector<double> xyz;
-      for(const auto& p : c.points) xyz.insert(xyz.end(), p.point.begin(), p.point.end());
-      if(c.is_closed() && !c.points.empty()) xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3);
-      curves.push_back(xyz);
-    }
+    for(const auto& c : b.curves()) curves.push_back(Pipeline::curve_coordinates(c));
     return nlohmann::json{{"curves", curves}, {"smoothed", smooth}, {"length", b.length()}}.dump();
   }
 
@@ -360,11 +335,7 @@ public:
     std::lock_guard<std::mutex> lock(m_mutex);
     const Options& options = m_run->options;
     const std::filesystem::path dir(options.output_dir);
-    write_file(dir / "edits.txt", [&](std::ostream& os) {
-      os << "# " << m_history.size() << " edits of feature_segmentation edit on " << options.input << "\n"
-         << "# replay: feature_segmentation MESH" << segmentation_options_text(options) << " --edits edits.txt\n";
-      write_edit_script(os, m_history);
-    });
+    m_run->pipeline.write_edits_file(m_history, "feature_segmentation edit on " + options.input);
     m_run->pipeline.write_outputs();
     nlohmann::json files = nlohmann::json::array();
     for(const char* f : {"segmentation.ply", "segmentation_refined.ply", "face_patches.txt", "vertex_patches.txt",
@@ -390,11 +361,6 @@ private:
   nlohmann::json state_unlocked() const
   {
     const auto& seg = *m_run->pipeline.segmentation;
-    std::ostringstream script;
-    write_edit_script(script, m_history);
-    nlohmann::json lines = nlohmann::json::array();
-    std::istringstream in(script.str());
-    for(std::string line; std::getline(in, line);) lines.push_back(line);
     nlohmann::json last = nullptr;
     if(m_last)
       last = {{"op", m_last->verb}, {"seconds", m_last->seconds}, {"prepare_seconds", m_last->prepare_seconds},
@@ -402,9 +368,9 @@ private:
     return {{"patches", seg.number_of_patches()},
             {"alpha", seg.alpha()},
             {"cut_cost", seg.cut_cost()},
-            {"edits", lines},
-            {"can_undo", history_depths().first > 0},
-            {"can_redo", history_depths().second > 0},
+            {"edits", edit_script_lines(m_history)},
+            {"can_undo", m_run->pipeline.number_of_undoable_edits() > 0},
+            {"can_redo", m_run->pipeline.number_of_redoable_edits() > 0},
             {"last_edit", last},
             {"vertices", num_vertices(m_run->pipeline.mesh)},
             {"triangles", m_triangles.size()},
@@ -413,20 +379,6 @@ private:
             {"radius", m_run->options.radius},
             {"strength_threshold", m_run->options.strength_threshold ? *m_run->options.strength_threshold
                                                                      : FS::default_strength_threshold}};
-  }
-
-  // Whether the history has an edit that an undo would take back / a redo make again
-  // (replaying the history's undo and redo lines; edits that changed nothing count).
-  std::pair<std::size_t, std::size_t> history_depths() const
-  {
-    std::size_t undoable = 0, redoable = 0;
-    for(const Script_edit& e : m_history)
-    {
-      if(e.verb == "undo") { --undoable; ++redoable; }
-      else if(e.verb == "redo") { ++undoable; --redoable; }
-      else { ++undoable; redoable = 0; }
-    }
-    return {undoable, redoable};
   }
 
   // The options, timer, results and pipeline of one run (a restart makes another).

@@ -37,7 +37,6 @@
 #include <unistd.h> // getpid: names of temporary output files
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -103,15 +102,6 @@ private:
   bool m_quiet;
   std::vector<std::pair<std::string, double> > m_seconds;
 };
-
-/// The shortest text that reads back as `x` (0.6, not 0.59999999999999998): numbers of
-/// the batch table and of messages.
-inline std::string number_text(double x)
-{
-  char buffer[32];
-  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, r.ptr);
-}
 
 // The solver chosen with --solver, timed on its own: the segmentation stage also builds
 // the graph and its weights, and the summary reports both times.
@@ -429,6 +419,67 @@ public:
   {
     if(!m_runner) m_runner = std::make_unique<Edit_runner<Mesh, K> >(mesh, correspondence, *segmentation, last_solver_seconds);
     return *m_runner;
+  }
+
+  /// The edits that an `undo` would take back, and those a `redo` would make again.
+  std::size_t number_of_undoable_edits() const { return m_runner ? m_runner->number_of_undoable_edits() : 0; }
+  std::size_t number_of_redoable_edits() const { return m_runner ? m_runner->number_of_redoable_edits() : 0; }
+
+  // What the editor and the Python module show, in plain coordinates (x y z x y z ...).
+
+  /// The points of a feature line (on the working mesh); a closed one repeats its first.
+  std::vector<double> line_coordinates(const FS::Feature_line<Mesh>& line) const
+  {
+    const Mesh& wm = segmentation->working_mesh();
+    std::vector<double> xyz;
+    for(const auto& p : line.points)
+    {
+      const K::Point_3 q = p.point(wm, get(CGAL::vertex_point, wm));
+      xyz.insert(xyz.end(), {q.x(), q.y(), q.z()});
+    }
+    if(line.is_closed && !xyz.empty()) xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3);
+    return xyz;
+  }
+
+  /// The crease edges, two points each.
+  std::vector<double> crease_segments() const
+  {
+    std::vector<double> xyz;
+    for(Mesh::Edge_index e : mesh.edges())
+      if(segmentation->is_crease_edge(e))
+        for(Mesh::Vertex_index v : {mesh.source(mesh.halfedge(e)), mesh.target(mesh.halfedge(e))})
+          xyz.insert(xyz.end(), {mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+    return xyz;
+  }
+
+  /// The patch boundaries, smoothed as the outputs are (`smooth`) or not.
+  FS::Patch_boundaries<Mesh> boundaries(bool smooth) const
+  {
+    FS::Patch_boundaries<Mesh> b = segmentation->patch_boundaries();
+    if(smooth)
+      FS::smooth_patch_boundaries(b, FS::parameters::smoothing_iterations(
+                                       m_options.smoothing_iterations ? *m_options.smoothing_iterations
+                                                                      : default_smoothing_iterations));
+    return b;
+  }
+
+  /// The points of a boundary curve; a closed one repeats its first.
+  static std::vector<double> curve_coordinates(const FS::Boundary_curve<Mesh>& c)
+  {
+    std::vector<double> xyz;
+    for(const auto& p : c.points) xyz.insert(xyz.end(), p.point.begin(), p.point.end());
+    if(c.is_closed() && !xyz.empty()) xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3);
+    return xyz;
+  }
+
+  /// Writes `history` as output_dir/edits.txt, headed by the options of its replay.
+  void write_edits_file(const std::vector<Script_edit>& history, const std::string& made_by) const
+  {
+    write_file(std::filesystem::path(m_options.output_dir) / "edits.txt", [&](std::ostream& os) {
+      os << "# " << history.size() << " edits of " << made_by << "\n"
+         << "# replay: feature_segmentation MESH" << segmentation_options_text(m_options) << " --edits edits.txt\n";
+      write_edit_script(os, history);
+    });
   }
 
   /// Writes every output of the current segmentation into `options.output_dir` (stages

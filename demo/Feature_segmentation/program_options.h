@@ -5,6 +5,8 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
 #define CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
 
+#include "number_text.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -12,7 +14,6 @@
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
 
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -467,11 +468,7 @@ inline Options parse_command_line(int argc, char** argv)
 /// replay of an editor session (`--edits edits.txt`) must be given.
 inline std::string segmentation_options_text(const Options& o)
 {
-  auto number = [](double x) {
-    char buffer[32];
-    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return std::string(buffer, r.ptr);
-  };
+  const auto number = number_text;
   std::string t = " --rings " + std::to_string(o.rings) + " --radius " + number(o.radius) +
                   " --strength-threshold " +
                   number(o.strength_threshold ? *o.strength_threshold : FS::default_strength_threshold) +

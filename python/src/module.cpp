@@ -216,15 +216,7 @@ public:
     return m_pipeline.segmentation->number_of_patches();
   }
 
-  std::vector<std::string> edits() const
-  {
-    std::ostringstream os;
-    write_edit_script(os, m_history);
-    std::vector<std::string> lines;
-    std::istringstream in(os.str());
-    for(std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-  }
+  std::vector<std::string> edits() const { return edit_script_lines(m_history); }
 
   double alpha() const { return m_pipeline.segmentation->alpha(); }
 
@@ -232,21 +224,14 @@ public:
   {
     FS::Patch_boundaries<Mesh> b = [&] {
       py::gil_scoped_release release;
-      FS::Patch_boundaries<Mesh> c = m_pipeline.segmentation->patch_boundaries();
-      if(smooth)
-        FS::smooth_patch_boundaries(c, FS::parameters::smoothing_iterations(
-                                         m_options.smoothing_iterations ? *m_options.smoothing_iterations
-                                                                        : default_smoothing_iterations));
-      return c;
+      return m_pipeline.boundaries(smooth);
     }();
     py::list curves;
     for(const auto& c : b.curves())
     {
-      const std::size_t k = c.points.size() + (c.is_closed() && !c.points.empty() ? 1 : 0);
-      py::array_t<double> a({py::ssize_t(k), py::ssize_t(3)});
-      double* out = a.mutable_data();
-      for(std::size_t i = 0; i < k; ++i)
-        for(int j = 0; j < 3; ++j) out[3 * i + j] = c.points[i % c.points.size()].point[j];
+      const std::vector<double> xyz = Pipeline::curve_coordinates(c);
+      py::array_t<double> a({py::ssize_t(xyz.size() / 3), py::ssize_t(3)});
+      std::copy(xyz.begin(), xyz.end(), a.mutable_data());
       curves.append(a);
     }
     return curves;
@@ -254,18 +239,13 @@ public:
 
   py::list feature_lines() const
   {
-    const auto& seg = *m_pipeline.segmentation;
-    const Mesh& wm = seg.working_mesh();
     py::list lines;
-    for(const auto& line : seg.feature_lines().lines)
+    for(const auto& line : m_pipeline.segmentation->feature_lines().lines)
     {
-      py::array_t<double> a({py::ssize_t(line.points.size()), py::ssize_t(3)});
-      double* out = a.mutable_data();
-      for(std::size_t i = 0; i < line.points.size(); ++i)
-      {
-        const K::Point_3 p = line.points[i].point(wm, get(CGAL::vertex_point, wm));
-        out[3 * i] = p.x(); out[3 * i + 1] = p.y(); out[3 * i + 2] = p.z();
-      }
+      std::vector<double> xyz = m_pipeline.line_coordinates(line);
+      if(line.is_closed && !xyz.empty()) xyz.resize(xyz.size() - 3); // the points, once each
+      py::array_t<double> a({py::ssize_t(xyz.size() / 3), py::ssize_t(3)});
+      std::copy(xyz.begin(), xyz.end(), a.mutable_data());
       py::dict d;
       d["kind"] = line.type == FS::Feature_line_type::RIDGE ? "ridge"
                   : line.type == FS::Feature_line_type::VALLEY ? "valley" : "user";
@@ -279,13 +259,7 @@ public:
   // The crease edges as a (c, 2, 3) array of segments.
   py::array_t<double> creases() const
   {
-    const auto& seg = *m_pipeline.segmentation;
-    const Mesh& m = m_pipeline.mesh;
-    std::vector<double> xyz;
-    for(Mesh::Edge_index e : m.edges())
-      if(seg.is_crease_edge(e))
-        for(Mesh::Vertex_index v : {m.source(m.halfedge(e)), m.target(m.halfedge(e))})
-          xyz.insert(xyz.end(), {m.point(v).x(), m.point(v).y(), m.point(v).z()});
+    const std::vector<double> xyz = m_pipeline.crease_segments();
     py::array_t<double> a({py::ssize_t(xyz.size() / 6), py::ssize_t(2), py::ssize_t(3)});
     std::copy(xyz.begin(), xyz.end(), a.mutable_data());
     return a;
@@ -297,12 +271,7 @@ public:
     py::gil_scoped_release release;
     run_translated([&] {
       create_output_dir(m_options);
-      write_file(std::filesystem::path(dir) / "edits.txt", [&](std::ostream& os) {
-        os << "# " << m_history.size() << " edits of feature_segmentation.Segmentation\n"
-           << "# replay: feature_segmentation MESH" << segmentation_options_text(m_options)
-           << " --edits edits.txt\n";
-        write_edit_script(os, m_history);
-      });
+      m_pipeline.write_edits_file(m_history, "feature_segmentation.Segmentation");
       m_pipeline.write_outputs();
     });
   }
