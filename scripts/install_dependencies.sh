@@ -7,7 +7,8 @@ packages=(
   build-essential cmake
   libcgal-dev      # CGAL 5.5 (header-only)
   libcgal-demo     # /usr/share/doc/libcgal-dev/data.tar.gz: fandisk and the other CAD meshes
-  libboost-graph-dev libboost-test-dev
+  libboost-graph-dev libboost-test-dev libboost-program-options-dev   # options of the program
+  libyaml-cpp-dev  # the ABC ground truth (benchmark/Feature_segmentation/evaluation)
   libeigen3-dev
   libtbb-dev       # threads (concurrency_tag, --threads)
   doxygen

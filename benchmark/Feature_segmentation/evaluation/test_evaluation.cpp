@@ -1,5 +1,5 @@
 // Quality metrics (metrics.h) on hand-computable cases (face labellings and boundary
-// curves), the YAML reader of the ground-truth format, and quality floors, without and
+// curves), the reader of the ABC ground truth (yaml-cpp), and quality floors, without and
 // with boundary smoothing: on fandisk always, on the ABC model when the shared data
 // folder is present ($FEATURE_SEGMENTATION_DATA, else ../shared/data beside the clone).
 // The floors are the values evaluate_quality measured, less a small margin, so that a
@@ -19,7 +19,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 namespace FS = CGAL::Feature_segmentation;
@@ -84,6 +89,53 @@ std::string shared_data_dir()
   for(int up = 0; up < 4; ++up) p = p.parent_path(); // the folder that holds the clone
   return (p / "shared" / "data").string();
 #endif
+}
+
+// The mesh the annotations of the ground-truth tests are for: 4 vertices, 5 faces.
+const std::size_t abc_vertices = 4, abc_faces = 5;
+
+// The reader takes a path: `text` in a .yml file of its own in the temporary folder,
+// removed with the object. The random name keeps two builds' runs apart.
+struct Temporary_yml
+{
+  std::filesystem::path path;
+  explicit Temporary_yml(const std::string& text)
+    : path(std::filesystem::temp_directory_path() / ("fs_evaluation_" + std::to_string(std::random_device()()) + ".yml"))
+  {
+    std::ofstream out(path);
+    out << text;
+    out.close();
+    BOOST_REQUIRE_MESSAGE(out, "cannot write " << path.string());
+  }
+  ~Temporary_yml()
+  {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+  }
+  Temporary_yml(const Temporary_yml&) = delete;
+  Temporary_yml& operator=(const Temporary_yml&) = delete;
+};
+
+// For BOOST_CHECK_EXCEPTION: the message names `path` and says `reason`. Checked inside,
+// as a failed predicate alone would not show the message.
+auto names_file_and_says(const std::string& path, const std::string& reason)
+{
+  return [path, reason](const std::runtime_error& e) {
+    const std::string what = e.what();
+    BOOST_CHECK_MESSAGE(what.find(path) != std::string::npos && what.find(reason) != std::string::npos,
+                        "message '" << what << "' should name " << path << " and say '" << reason << "'");
+    return true;
+  };
+}
+
+void check_abc_error(const std::string& text, const std::string& reason)
+{
+  BOOST_TEST_CONTEXT("annotations: " << text)
+  {
+    const Temporary_yml yml(text);
+    BOOST_CHECK_EXCEPTION(FE::read_abc_ground_truth(yml.path.string(), abc_vertices, abc_faces), std::runtime_error,
+                          names_file_and_says(yml.path.string(), reason));
+  }
 }
 
 } // namespace
@@ -243,20 +295,77 @@ BOOST_AUTO_TEST_CASE(cut_cost_and_vertex_patches_by_hand)
   BOOST_CHECK_EQUAL(FS::number_of_patches(m, as_map(fl)), 2u);
 }
 
-BOOST_AUTO_TEST_CASE(yaml_reader_flow_and_block)
+// The same annotations in flow and in block style (the latter as PyYAML writes the ABC
+// files, with a "---", comments and quoted scalars added) read alike: faces 1 and 0 in a
+// plane, face 3 in a surface without type, faces 2 and 4 in none; of the curves, the one
+// without vertices is left out.
+BOOST_AUTO_TEST_CASE(abc_ground_truth_flow_and_block)
 {
-  const std::string flow = "{curves: [{sharp: true, vert_indices: [0, 1,\n   2]}], surfaces: [{face_indices: [1, 0], type: Plane}]}\n";
-  const std::string block = "---\n# a comment\ncurves:\n- sharp: false\n  vert_indices:\n  - 2\n  - 1\nsurfaces:\n  - type: 'Cone'\n    face_indices: [2]\n";
-  const FE::Yaml_node a = FE::Yaml_parser(flow).parse(), b = FE::Yaml_parser(block).parse();
-  BOOST_REQUIRE(a.find("curves") && b.find("curves") && a.find("surfaces") && b.find("surfaces"));
-  BOOST_CHECK_EQUAL(a.find("curves")->items.at(0).find("vert_indices")->items.at(2).scalar, "2");
-  BOOST_CHECK_EQUAL(a.find("curves")->items.at(0).find("sharp")->scalar, "true");
-  BOOST_CHECK_EQUAL(a.find("surfaces")->items.at(0).find("face_indices")->items.size(), 2u);
-  BOOST_CHECK_EQUAL(b.find("curves")->items.at(0).find("vert_indices")->items.at(1).scalar, "1");
-  BOOST_CHECK_EQUAL(b.find("surfaces")->items.at(0).find("type")->scalar, "Cone");
-  BOOST_CHECK_EQUAL(b.find("surfaces")->items.at(0).find("face_indices")->items.at(0).scalar, "2");
-  BOOST_CHECK_THROW(FE::Yaml_parser("a: [1, 2\n").parse(), FE::Yaml_error);
-  BOOST_CHECK_THROW(FE::Yaml_parser("a: &x 1\n").parse(), FE::Yaml_error);
+  const std::string flow =
+    "{curves: [{sharp: true, vert_indices: [0, 1,\n   2]}, {type: Circle}, {sharp: false, vert_indices: [2, 3]}],\n"
+    " surfaces: [{face_indices: [1, 0], type: Plane}, {face_indices: [3]}]}\n";
+  const std::string block =
+    "---\n"
+    "# a comment\n"
+    "curves:\n"
+    "- sharp: True\n"
+    "  vert_indices:\n"
+    "  - 0\n"
+    "  - 1\n"
+    "  - 2\n"
+    "- type: Circle # no vert_indices\n"
+    "- sharp: 'false'\n"
+    "  vert_indices: [2, 3]\n"
+    "surfaces:\n"
+    "  - type: \"Plane\"\n"
+    "    face_indices:\n"
+    "      - 1\n"
+    "      - 0\n"
+    "  - face_indices: [3]\n";
+  const std::vector<int> face_patch = {0, 0, -1, 1, -1};
+  const std::vector<std::string> patch_type = {"Plane", "?"};
+  const std::vector<std::size_t> curve0 = {0, 1, 2}, curve1 = {2, 3};
+  const std::pair<const char*, std::string> variants[] = {{"flow", flow}, {"block", block}};
+  for(const auto& variant : variants)
+  {
+    BOOST_TEST_CONTEXT(variant.first << " style")
+    {
+      const Temporary_yml yml(variant.second);
+      const FE::Abc_ground_truth gt = FE::read_abc_ground_truth(yml.path.string(), abc_vertices, abc_faces);
+      BOOST_CHECK_EQUAL_COLLECTIONS(gt.face_patch.begin(), gt.face_patch.end(), face_patch.begin(), face_patch.end());
+      BOOST_CHECK_EQUAL_COLLECTIONS(gt.patch_type.begin(), gt.patch_type.end(), patch_type.begin(), patch_type.end());
+      BOOST_REQUIRE_EQUAL(gt.curves.size(), 2u);
+      BOOST_CHECK_EQUAL_COLLECTIONS(gt.curves[0].begin(), gt.curves[0].end(), curve0.begin(), curve0.end());
+      BOOST_CHECK_EQUAL_COLLECTIONS(gt.curves[1].begin(), gt.curves[1].end(), curve1.begin(), curve1.end());
+      BOOST_CHECK(gt.curve_is_sharp == std::vector<bool>({true, false}));
+    }
+  }
+}
+
+// Malformed or inconsistent annotations, and a missing file, throw std::runtime_error
+// naming the file and what is wrong.
+BOOST_AUTO_TEST_CASE(abc_ground_truth_errors)
+{
+  check_abc_error("surfaces: [{face_indices: [0], type: Plane}\n", "end of sequence flow not found"); // unclosed '['
+  check_abc_error("surfaces: [{face_indices: [0, 5]}]\n", "bad face index '5'"); // faces 0 to 4
+  check_abc_error("surfaces: [{face_indices: [-1]}]\n", "bad face index '-1'");
+  check_abc_error("surfaces: [{face_indices: [1.5]}]\n", "bad face index '1.5'");
+  check_abc_error("surfaces: [{face_indices: [0x1]}]\n", "bad face index '0x1'"); // indices are decimal
+  check_abc_error("surfaces: [{face_indices: [[1]]}]\n", "bad face index ''");
+  check_abc_error("surfaces: [{face_indices: [0]}, {face_indices: [2, 0]}]\n", "face 0 in two surfaces");
+  check_abc_error("surfaces: [{type: Plane}]\n", "a surface without 'face_indices'");
+  check_abc_error("surfaces: [{face_indices: 1}]\n", "a surface without 'face_indices'");
+  check_abc_error("curves: []\n", "no 'surfaces' sequence");
+  check_abc_error("surfaces: {face_indices: [0]}\n", "no 'surfaces' sequence");
+  check_abc_error("", "no 'surfaces' sequence");
+  check_abc_error("surfaces: []\ncurves: [{vert_indices: [0, 4]}]\n", "bad vertex index '4'"); // vertices 0 to 3
+  std::string missing;
+  {
+    const Temporary_yml yml("");
+    missing = yml.path.string();
+  } // removed here
+  BOOST_CHECK_EXCEPTION(FE::read_abc_ground_truth(missing, abc_vertices, abc_faces), std::runtime_error,
+                        names_file_and_says(missing, "cannot read"));
 }
 
 // Floors on fandisk (no ground truth): coverage of the strong feature lines, redundancy
