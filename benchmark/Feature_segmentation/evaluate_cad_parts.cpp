@@ -15,7 +15,9 @@
 // the CAD parts, outside their mean.
 //
 // Usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]
+//                           [--alpha A] [--strength-threshold S] [--no-tangent]
 //   N: rounds of normal filtering before the creases are found (default: the library's, 40)
+//   --no-tangent: without the curvature discontinuities (tangent_discontinuities(false))
 //   DIR (default $FEATURE_SEGMENTATION_DATA) holds cad/; without it the program says so
 //   and exits with status 0 (nothing to evaluate).
 
@@ -95,6 +97,7 @@ double tangent_continuous_share(const Mesh& mesh, const std::vector<int>& labels
 int crease_filter = FS::internal::Segmentation_options().crease_filter_iterations;
 double alpha = FS::internal::Segmentation_options().alpha;
 double strength_threshold = FS::default_strength_threshold;
+bool tangent = FS::internal::Segmentation_options().tangent_discontinuities;
 
 Segmentation run_package(const Mesh& mesh, double crease_angle)
 {
@@ -107,6 +110,7 @@ Segmentation run_package(const Mesh& mesh, double crease_angle)
                                                    .strength_threshold(paper ? FS::default_strength_threshold
                                                                              : strength_threshold)
                                                    .crease_filter_iterations(crease_filter)
+                                                   .tangent_discontinuities(tangent)
                                                    // the paper's pipeline also fits on rings alone
                                                    .neighborhood_radius(paper ? 0. : FS::default_neighborhood_radius)
                                                    .face_patch_map(fp));
@@ -154,6 +158,7 @@ int main(int argc, char** argv)
       }
       (a == "--alpha" ? alpha : strength_threshold) = x;
     }
+    else if(a == "--no-tangent") tangent = false;
     else if(a == "--noise" && i + 1 < argc)
     {
       noise.clear();
@@ -162,7 +167,7 @@ int main(int argc, char** argv)
       while(std::getline(ss, x, ',')) noise.push_back(std::stod(x));
     }
     else { std::cerr << "usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]\n"
-                 "                          [--alpha A] [--strength-threshold S]\n"; return 2; }
+                 "                          [--alpha A] [--strength-threshold S] [--no-tangent]\n"; return 2; }
   }
   const fsys::path dir = fsys::path(data) / "cad";
   if(data.empty() || !fsys::is_directory(dir))

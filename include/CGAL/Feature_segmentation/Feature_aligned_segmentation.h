@@ -652,7 +652,8 @@ private:
     if(opt.crease_angle >= 180) return w;
     check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
     auto idx = std::make_unique<internal::Mesh_indexing<TriangleMesh> >(tm);
-    internal::compute_crease_cut(*idx, vpm, opt.crease_angle, opt.crease_filter_iterations, opt.gamma, w->cut);
+    internal::compute_crease_cut(*idx, vpm, opt.crease_angle, opt.crease_filter_iterations, opt.tangent_discontinuities,
+                                 opt.gamma, w->cut);
     if(w->cut.is_cut()) w->input_idx = std::move(idx);
     return w;
   }

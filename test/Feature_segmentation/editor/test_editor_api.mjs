@@ -26,7 +26,7 @@ try {
 
   // ---- queries
   const s0 = await state();
-  check('state: fandisk has 20 patches at the defaults', s0.patches === 20, s0.patches);
+  check('state: fandisk has 22 patches at the defaults', s0.patches === 22, s0.patches);
   check('state: alpha 0.6, no edits, nothing to undo or redo',
         s0.alpha === 0.6 && s0.edits.length === 0 && !s0.can_undo && !s0.can_redo);
   const mesh = (await get('api/mesh')).body;
@@ -34,12 +34,12 @@ try {
         mesh.triangles.length === 3 * 12946 && mesh.vertices.length === 3 * 6475 && s0.triangles === 12946);
   check('mesh: every corner is a vertex index', mesh.triangles.every((i) => i >= 0 && i < 6475));
   const l0 = await labels();
-  check('labels: one patch per triangle and vertex, numbered 0 .. 19',
+  check('labels: one patch per triangle and vertex, numbered 0 .. 21',
         l0.face_patches.length === 12946 && l0.vertex_patches.length === 6475 &&
-        Math.max(...l0.face_patches) === 19 && Math.max(...l0.vertex_patches) === 19);
+        Math.max(...l0.face_patches) === 21 && Math.max(...l0.vertex_patches) === 21);
   const features = (await get('api/features')).body;
-  check('features: crease segments (6 numbers each) for the 875 crease edges',
-        features.creases.length === 6 * s0.crease_edges && s0.crease_edges === 875, s0.crease_edges);
+  check('features: crease segments (6 numbers each) for the 925 crease edges',
+        features.creases.length === 6 * s0.crease_edges && s0.crease_edges === 925, s0.crease_edges);
   const smooth = (await get('api/boundaries?smooth=1')).body, raw = (await get('api/boundaries?smooth=0')).body;
   check('boundaries: the smoothing shortens them', smooth.curves.length > 0 && smooth.length < raw.length,
         `${raw.length.toFixed(4)} -> ${smooth.length.toFixed(4)}`);
@@ -76,11 +76,11 @@ try {
   check('413 for a body over 8 MB', huge.status === 413, huge.body.error);
   const sBad = await state();
   check('the state after the bad requests is unchanged',
-        sBad.patches === 20 && sBad.edits.length === 0 && sBad.cut_cost === s0.cut_cost);
+        sBad.patches === 22 && sBad.edits.length === 0 && sBad.cut_cost === s0.cut_cost);
 
   // ---- every verb
   const a = await post('api/edit', { op: 'alpha', value: 1.0 });
-  check('alpha 1.0: 25 patches, as the program gives', a.status === 200 && a.body.patches === 25, a.body.patches);
+  check('alpha 1.0: 28 patches, as the program gives', a.status === 200 && a.body.patches === 28, a.body.patches);
   check('alpha: the answer is the new state with the edit listed and timed',
         a.body.alpha === 1 && a.body.edits[0] === 'alpha 1' && a.body.last_edit.op === 'alpha' &&
         a.body.last_edit.server_seconds > 0);
@@ -88,16 +88,16 @@ try {
   // two triangles of different patches: merging them removes exactly one patch
   const f1 = 0, f2 = l1.face_patches.findIndex((p) => p !== l1.face_patches[0]);
   const m = await post('api/edit', { op: 'merge', faces: [f1, f2] });
-  check('merge of two triangles of two patches: one patch fewer', m.body.patches === 24, m.body.patches);
+  check('merge of two triangles of two patches: one patch fewer', m.body.patches === 27, m.body.patches);
   const l2 = await labels();
   check('merge: the two triangles now share a patch', l2.face_patches[f1] === l2.face_patches[f2]);
   const r = await post('api/edit', { op: 'refine', faces: [...Array(12946).keys()], amount: 0.3 });
-  check('refine everywhere: at least as many patches', r.status === 200 && r.body.patches >= 24, r.body.patches);
+  check('refine everywhere: at least as many patches', r.status === 200 && r.body.patches >= 27, r.body.patches);
   const c = await post('api/edit', { op: 'coarsen', faces: [...Array(12946).keys()], amount: 0.3 });
-  check('coarsen by the same amount: back to 24 patches', c.body.patches === 24, c.body.patches);
+  check('coarsen by the same amount: back to 27 patches', c.body.patches === 27, c.body.patches);
   const lc = await labels();
   const sc = await post('api/edit', { op: 'scale', faces: [...Array(12946).keys()], factor: 0 });
-  check('scale by 0 everywhere: no feature reward left, fewer patches', sc.body.patches < 24, sc.body.patches);
+  check('scale by 0 everywhere: no feature reward left, fewer patches', sc.body.patches < 27, sc.body.patches);
   // a sketch between two points of the mesh: feature edges appear
   const p = (v) => mesh.vertices.slice(3 * v, 3 * v + 3);
   const t0 = mesh.triangles.slice(0, 3), far = mesh.triangles.slice(3 * 600, 3 * 600 + 3);
@@ -113,7 +113,7 @@ try {
   await post('api/edit', { op: 'undo' });
   await post('api/edit', { op: 'undo' });
   const back = await state();
-  check('two undos: the state before the scale (24 patches)', back.patches === 24 && back.cut_cost === c.body.cut_cost);
+  check('two undos: the state before the scale (27 patches)', back.patches === 27 && back.cut_cost === c.body.cut_cost);
   check('after the undos, the labels are exactly those before the scale',
         JSON.stringify((await labels()).face_patches) === JSON.stringify(lc.face_patches));
 

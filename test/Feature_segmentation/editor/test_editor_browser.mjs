@@ -33,7 +33,7 @@ try {
   await page.goto(editor.url);
   await page.waitForFunction(() => window.editor && window.editor.ready === true, null, { timeout: 60000 });
   const patches = async () => Number(await page.textContent('#patches'));
-  check('the page loads and shows 20 patches', (await patches()) === 20);
+  check('the page loads and shows 22 patches', (await patches()) === 22);
 
   // the canvas draws the mesh: many non-white pixels in many colours
   const drawn = await page.evaluate(() => {
@@ -56,8 +56,8 @@ try {
 
   // alpha slider to 1.0
   await page.$eval('#alpha', (el) => { el.value = '1'; el.dispatchEvent(new Event('change')); });
-  await page.waitForFunction(() => document.querySelector('#patches').textContent === '25', null, { timeout: 30000 });
-  check('moving the alpha slider to 1 gives 25 patches', (await patches()) === 25);
+  await page.waitForFunction(() => document.querySelector('#patches').textContent === '28', null, { timeout: 30000 });
+  check('moving the alpha slider to 1 gives 28 patches', (await patches()) === 28);
   const lastEdit = await page.textContent('#last-edit');
   check('the time of the last edit is shown', /^alpha: [0-9.]+ ms$/.test(lastEdit), lastEdit);
 
@@ -71,17 +71,17 @@ try {
   for (let i = 1; i <= 30; ++i) await page.mouse.move(...at(i / 30));
   await page.mouse.up();
   await page.keyboard.up('Control');
-  await page.waitForFunction(() => document.querySelector('#patches').textContent !== '25', null, { timeout: 30000 });
+  await page.waitForFunction(() => document.querySelector('#patches').textContent !== '28', null, { timeout: 30000 });
   const merged = await patches();
-  check('a Ctrl-drag stroke merges patches', merged < 25, `${merged} patches`);
+  check('a Ctrl-drag stroke merges patches', merged < 28, `${merged} patches`);
   const state = await page.evaluate(() => window.editor.current);
   check('the stroke arrived as one merge edit', state.edits[state.edits.length - 1].startsWith('merge triangles '));
 
   // undo with the button
   await page.click('#undo');
-  await page.waitForFunction(() => document.querySelector('#patches').textContent === '25', null, { timeout: 30000 });
+  await page.waitForFunction(() => document.querySelector('#patches').textContent === '28', null, { timeout: 30000 });
   await page.waitForFunction(() => window.editor.inflight === 0, null, { timeout: 30000 });
-  check('undo gives the 25 patches back', (await patches()) === 25);
+  check('undo gives the 28 patches back', (await patches()) === 28);
 
   // Shift-drag paints a region; Refine sends it as a local edit
   await page.keyboard.down('Shift');

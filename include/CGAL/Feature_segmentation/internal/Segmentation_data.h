@@ -41,6 +41,9 @@ struct Segmentation_options
   // a clean mesh (normal roughness at most 0.01) is not filtered at all (0: the raw
   // dihedral angles everywhere)
   int crease_filter_iterations = 40;
+  // on a clean tessellation, the curvature discontinuities (a fillet meeting a plane
+  // without a crease) join the creases (see the manual, Creases)
+  bool tangent_discontinuities = true;
 
   void check() const
   {

@@ -13,6 +13,7 @@
 
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -312,10 +313,13 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
 // least crease_angle on the face normals after at most `filter_iterations` rounds of
 // bilateral filtering (none on a clean mesh; 0: the raw normals), so that noise along
 // the normals neither makes creases in flat parts nor breaks real ones, and that pass
-// the gap test (keep_creases_with_gap). `angle` receives the filtered angles.
+// the gap test (keep_creases_with_gap), marked 1; on a clean tessellation (raw
+// roughness at most crease_filter_roughness) and if `tangent`, the curvature
+// discontinuities (mark_tangent_discontinuities), marked 2. `angle` receives the
+// filtered angles.
 template <typename TriangleMesh, typename VPM>
 std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle,
-                                 int filter_iterations, std::vector<double>& angle)
+                                 int filter_iterations, bool tangent, std::vector<double>& angle)
 {
   std::vector<Eigen::Vector3d> normal, centroid;
   std::vector<double> area;
@@ -339,6 +343,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, centroid, is_crease);
+  if(tangent && raw_roughness <= crease_filter_roughness) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
   return is_crease;
 }
 
@@ -356,6 +361,13 @@ struct Crease_tie
   std::size_t crease_edge = 0; // input edge index
   double similarity = 0, award = 0;
 };
+
+// A curvature discontinuity (mark_tangent_discontinuities) is tied as a crease of this
+// many times the crease angle. At 1 (20 degrees by default) the ties of the small
+// blends of fandisk are weak enough that the ordering of the vertices decides whether
+// a blend stays a patch (22 patches, or 21 on its flat subdivision); at 2 both meshes
+// give the same 22 patches, and the CAD parts the same scores (manual, Creases).
+constexpr double tangent_crease_equivalent = 2.;
 
 // The width, relative to the largest side of the bounding box, over which a crease's
 // dihedral angle is spread to give it a curvature (Crease_tie).
@@ -384,7 +396,7 @@ struct Crease_cut
 // elements in the same iteration order).
 template <typename TriangleMesh, typename VPM>
 void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, int filter_iterations,
-                        double gamma, Crease_cut<TriangleMesh>& cut)
+                        bool tangent, double gamma, Crease_cut<TriangleMesh>& cut)
 {
   typedef boost::graph_traits<TriangleMesh> GTr;
   typedef typename GTr::vertex_descriptor vertex_descriptor;
@@ -397,8 +409,8 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   cut.is_crease.assign(ne, 0);
   if(crease_angle >= 180) return;
   std::vector<double> angle;
-  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, angle);
-  cut.number_of_creases = std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 1));
+  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, tangent, angle);
+  cut.number_of_creases = ne - std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 0));
   if(cut.number_of_creases == 0) return;
 
   // Corners (face, k-th halfedge of the face, at its target) joined across every
@@ -526,7 +538,10 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
     if(!cut.is_crease[e]) continue;
     const halfedge_descriptor h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
     const double half = 0.5 * (point(source(h, tm)) - point(target(h, tm))).norm();
-    const double s = (angle[e] * 3.14159265358979323846 / 180.) / crease_bend_width;
+    // a curvature discontinuity (a jump of curvature, which no dihedral angle measures)
+    // counts as a crease of tangent_crease_equivalent times the threshold angle
+    const double bend = cut.is_crease[e] == 2 ? (std::max)(angle[e], tangent_crease_equivalent * crease_angle) : angle[e];
+    const double s = (bend * 3.14159265358979323846 / 180.) / crease_bend_width;
     // the copies of target(h) on h's side and on o's side (the corner of o's face at
     // target(h) is that of prev(o)); likewise for source(h)
     const std::size_t ends[2][2] = {

@@ -29,6 +29,8 @@ Segmentation_options read_segmentation_options(const NamedParameters& np)
   opt.crease_angle = choose_parameter(get_parameter(np, internal_np::crease_angle), opt.crease_angle);
   opt.crease_filter_iterations =
     choose_parameter(get_parameter(np, internal_np::crease_filter_iterations), opt.crease_filter_iterations);
+  opt.tangent_discontinuities =
+    choose_parameter(get_parameter(np, internal_np::tangent_discontinuities), opt.tangent_discontinuities);
   opt.check();
   return opt;
 }
