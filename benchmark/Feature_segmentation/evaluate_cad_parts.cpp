@@ -15,9 +15,10 @@
 // the CAD parts, outside their mean.
 //
 // Usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]
-//                           [--alpha A] [--strength-threshold S] [--no-tangent]
+//                           [--alpha A] [--strength-threshold S] [--no-tangent] [--no-crest-lines]
 //   N: rounds of normal filtering before the creases are found (default: the library's, 40)
 //   --no-tangent: without the curvature discontinuities (tangent_discontinuities(false))
+//   --no-crest-lines: no crest lines on the clean parts (crest_lines_on_clean_tessellations(false))
 //   DIR (default $FEATURE_SEGMENTATION_DATA) holds cad/; without it the program says so
 //   and exits with status 0 (nothing to evaluate).
 
@@ -98,6 +99,7 @@ int crease_filter = FS::internal::Segmentation_options().crease_filter_iteration
 double alpha = FS::internal::Segmentation_options().alpha;
 double strength_threshold = FS::default_strength_threshold;
 bool tangent = FS::internal::Segmentation_options().tangent_discontinuities;
+bool crest_lines = FS::internal::Segmentation_options().crest_lines_on_clean_tessellations;
 
 Segmentation run_package(const Mesh& mesh, double crease_angle)
 {
@@ -111,6 +113,7 @@ Segmentation run_package(const Mesh& mesh, double crease_angle)
                                                                              : strength_threshold)
                                                    .crease_filter_iterations(crease_filter)
                                                    .tangent_discontinuities(tangent)
+                                                   .crest_lines_on_clean_tessellations(crest_lines)
                                                    // the paper's pipeline also fits on rings alone
                                                    .neighborhood_radius(paper ? 0. : FS::default_neighborhood_radius)
                                                    .face_patch_map(fp));
@@ -159,6 +162,7 @@ int main(int argc, char** argv)
       (a == "--alpha" ? alpha : strength_threshold) = x;
     }
     else if(a == "--no-tangent") tangent = false;
+    else if(a == "--no-crest-lines") crest_lines = false;
     else if(a == "--noise" && i + 1 < argc)
     {
       noise.clear();
@@ -167,7 +171,7 @@ int main(int argc, char** argv)
       while(std::getline(ss, x, ',')) noise.push_back(std::stod(x));
     }
     else { std::cerr << "usage: evaluate_cad_parts [--data DIR] [--out FILE.csv] [--noise X,Y,...] [--crease-filter N]\n"
-                 "                          [--alpha A] [--strength-threshold S] [--no-tangent]\n"; return 2; }
+                 "                          [--alpha A] [--strength-threshold S] [--no-tangent] [--no-crest-lines]\n"; return 2; }
   }
   const fsys::path dir = fsys::path(data) / "cad";
   if(data.empty() || !fsys::is_directory(dir))

@@ -9,11 +9,13 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include "test_meshes.h"
 
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -114,6 +116,20 @@ BOOST_AUTO_TEST_CASE(cylinder_has_no_discontinuity)
   const SM m = fs_test::to_mesh<SM>(fs_test::cylinder(0.5, 1., 24, 6));
   FS::Feature_aligned_segmentation<SM> seg(m);
   BOOST_TEST(seg.number_of_crease_edges() == 0u);
+}
+
+// crest_lines_on_clean_tessellations(false): on fandisk, a clean tessellation cut open
+// along creases, the feature edges are then exactly the creases and discontinuities.
+BOOST_AUTO_TEST_CASE(clean_tessellation_without_crest_lines)
+{
+  SM m;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m));
+  FS::Feature_aligned_segmentation<SM> with(m), without(m, FS::parameters::crest_lines_on_clean_tessellations(false));
+  BOOST_TEST(with.number_of_crease_edges() == 925u); // 875 creases and 50 discontinuity edges
+  BOOST_TEST(with.number_of_feature_edges() > with.number_of_crease_edges()); // and crest lines
+  BOOST_TEST(without.number_of_crease_edges() == with.number_of_crease_edges());
+  BOOST_TEST(without.number_of_feature_edges() == without.number_of_crease_edges());
+  BOOST_TEST(without.number_of_patches() == 20u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -710,6 +710,11 @@ private:
     }
     const TriangleMesh& wm = *m_work->cut.mesh;
     const internal::Crease_cut<TriangleMesh>& cut = m_work->cut;
+    // a clean tessellation cut open: its B-rep faces are bounded by the creases and the
+    // curvature discontinuities, and crest lines mostly cut its curved faces apart
+    // (crest_lines_on_clean_tessellations(false) leaves them out)
+    internal::Segmentation_options opt = m_opt;
+    opt.detect_crest_lines = !cut.clean || m_opt.crest_lines_on_clean_tessellations;
     const internal::Mesh_indexing<TriangleMesh>& in = *m_work->input_idx;
     const internal::Mesh_indexing<TriangleMesh>& wi = m_data.idx;
     auto wvpm = get_const_property_map(CGAL::vertex_point, wm);
@@ -718,7 +723,7 @@ private:
     auto with_lines = [&](const auto& np3) {
       typedef std::decay_t<decltype(np3)> NP3;
       if constexpr(is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value)
-        internal::prepare_segmentation_data(wm, np3, m_opt, m_data, m_lines);
+        internal::prepare_segmentation_data(wm, np3, opt, m_data, m_lines);
       else
       {
         Feature_lines<TriangleMesh> lines = get_parameter_reference(np, internal_np::feature_lines);
@@ -726,7 +731,7 @@ private:
           for(auto& p : l.points)
             p.halfedge = working_halfedge_at(cut.working_halfedge[in.halfedge_id(p.halfedge)]);
         const Named_function_parameters<Feature_lines<TriangleMesh>, internal_np::feature_lines_t, NP3> np4(lines, np3);
-        internal::prepare_segmentation_data(wm, np4, m_opt, m_data, m_lines);
+        internal::prepare_segmentation_data(wm, np4, opt, m_data, m_lines);
       }
     };
     auto with_features = [&](const auto& np2) {

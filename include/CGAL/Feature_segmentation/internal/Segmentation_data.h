@@ -44,6 +44,13 @@ struct Segmentation_options
   // on a clean tessellation, the curvature discontinuities (a fillet meeting a plane
   // without a crease) join the creases (see the manual, Creases)
   bool tangent_discontinuities = true;
+  // crest lines also on a clean tessellation cut open along creases, as the paper
+  // (false: its feature lines are its creases and discontinuities; see the manual, CAD
+  // Parts)
+  bool crest_lines_on_clean_tessellations = true;
+  // set by the class, not by a parameter: whether prepare_segmentation_data detects
+  // crest lines when no feature is given
+  bool detect_crest_lines = true;
 
   void check() const
   {

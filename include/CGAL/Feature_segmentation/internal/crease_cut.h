@@ -316,10 +316,10 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
 // the gap test (keep_creases_with_gap), marked 1; on a clean tessellation (raw
 // roughness at most crease_filter_roughness) and if `tangent`, the curvature
 // discontinuities (mark_tangent_discontinuities), marked 2. `angle` receives the
-// filtered angles.
+// filtered angles, `clean` whether the tessellation is clean.
 template <typename TriangleMesh, typename VPM>
 std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle,
-                                 int filter_iterations, bool tangent, std::vector<double>& angle)
+                                 int filter_iterations, bool tangent, std::vector<double>& angle, bool& clean)
 {
   std::vector<Eigen::Vector3d> normal, centroid;
   std::vector<double> area;
@@ -328,6 +328,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   vertex_adjacent_faces(idx, begin, ring);
   const std::vector<double> raw = dihedral_angles(idx, normal);
   const double raw_roughness = normal_roughness(normal, begin, ring);
+  clean = raw_roughness <= crease_filter_roughness;
   // A clean tessellation is not filtered. A smooth model (raw roughness up to
   // crease_gap_raw_roughness) is filtered until its median face is smooth or for
   // crease_smooth_filter_iterations rounds: each round also blurs its moderate bends. A noisy mesh gets every round: stopping when the
@@ -343,7 +344,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, centroid, is_crease);
-  if(tangent && raw_roughness <= crease_filter_roughness) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
+  if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
   return is_crease;
 }
 
@@ -381,6 +382,7 @@ struct Crease_cut
   std::unique_ptr<TriangleMesh> mesh;             // the working mesh (null: no crease)
   std::vector<char> is_crease;                    // per input edge
   std::size_t number_of_creases = 0;
+  bool clean = false;                             // a clean tessellation (normal roughness at most 0.01)
   std::vector<std::size_t> input_vertex;          // per working vertex: the input vertex it copies
   std::vector<std::size_t> working_vertex;        // per input vertex: its copy in its first face's sector
   std::vector<std::size_t> working_halfedge;      // per input halfedge: the working halfedge
@@ -409,7 +411,7 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   cut.is_crease.assign(ne, 0);
   if(crease_angle >= 180) return;
   std::vector<double> angle;
-  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, tangent, angle);
+  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, tangent, angle, cut.clean);
   cut.number_of_creases = ne - std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 0));
   if(cut.number_of_creases == 0) return;
 

@@ -26,6 +26,8 @@ FS_add_named_parameter(feature_lines_t, feature_lines, feature_lines)
 FS_add_named_parameter(crease_angle_t, crease_angle, crease_angle)
 FS_add_named_parameter(crease_filter_iterations_t, crease_filter_iterations, crease_filter_iterations)
 FS_add_named_parameter(tangent_discontinuities_t, tangent_discontinuities, tangent_discontinuities)
+FS_add_named_parameter(crest_lines_on_clean_tessellations_t, crest_lines_on_clean_tessellations,
+                       crest_lines_on_clean_tessellations)
 FS_add_named_parameter(cut_cost_output_t, cut_cost_output, cut_cost_output)
 FS_add_named_parameter(use_oversegmentation_t, use_oversegmentation, use_oversegmentation)
 FS_add_named_parameter(watershed_distance_t, watershed_distance, watershed_distance)

@@ -31,6 +31,8 @@ Segmentation_options read_segmentation_options(const NamedParameters& np)
     choose_parameter(get_parameter(np, internal_np::crease_filter_iterations), opt.crease_filter_iterations);
   opt.tangent_discontinuities =
     choose_parameter(get_parameter(np, internal_np::tangent_discontinuities), opt.tangent_discontinuities);
+  opt.crest_lines_on_clean_tessellations = choose_parameter(
+    get_parameter(np, internal_np::crest_lines_on_clean_tessellations), opt.crest_lines_on_clean_tessellations);
   opt.check();
   return opt;
 }
@@ -78,7 +80,8 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
     }
     else
     {
-      lines_out = detect_crest_lines(tm, cmap, np);
+      if(opt.detect_crest_lines) lines_out = detect_crest_lines(tm, cmap, np);
+      else lines_out.lines.clear();
       mark_feature_edges(tm, lines_out, own_features);
       data.set_features(own_features, lines_out);
     }
