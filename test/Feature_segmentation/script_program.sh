@@ -131,7 +131,7 @@ check "fandisk: summary faces ($f) = OFF header ($header_faces)" [ "$f" = "$head
 # A closed triangle mesh: 3F = 2E, and Euler's formula for fandisk (genus 0): V - E + F = 2.
 check "fandisk: edges ($e) = 3F/2" [ "$e" = "$((3 * header_faces / 2))" ]
 check "fandisk: Euler characteristic 2" [ "$((v - e + f))" -eq 2 ]
-check "fandisk: feature lines found (total $total)" [ -n "$total" ] && [ "${total:-0}" -gt 0 ]
+check "fandisk: feature lines found (total $total)" [ -n "$total" -a "${total:-0}" -gt 0 ]
 check "fandisk: ridges + valleys + user = total" [ "$((ridges + valleys + user))" -eq "$total" ]
 check "fandisk: no user lines without --feature-edges" [ "$user" -eq 0 ]
 check "fandisk: feature edges counted (${fedges:-none})" [ "${fedges:-0}" -gt 0 ]
@@ -201,8 +201,8 @@ check "fandisk: boundaries.polylines.txt well-formed" polylines_well_formed "$ou
 check "fandisk: smoothing_iterations = 20 (the library's default) in options" \
   [ "$(json_int "$summary" options smoothing_iterations)" = 20 ]
 check "fandisk: smoothing ran (iterations in [1, 20])" \
-  [ "$(json_int "$summary" boundaries smoothing_iterations)" -ge 1 ] && \
-  [ "$(json_int "$summary" boundaries smoothing_iterations)" -le 20 ]
+  [ "$(json_int "$summary" boundaries smoothing_iterations)" -ge 1 -a \
+   "$(json_int "$summary" boundaries smoothing_iterations)" -le 20 ]
 check "fandisk: smoothing does not raise the anisotropic length" \
   awk -v a="$(json_number "$summary" boundaries anisotropic_length_after)" \
       -v b="$(json_number "$summary" boundaries anisotropic_length_before)" 'BEGIN { exit !(a != "" && a <= b) }'
@@ -211,7 +211,7 @@ check "fandisk: smoothing_seconds and seconds.smoothing in summary" \
 refined_v="$(sed -n 's/^element vertex \([0-9]*\)$/\1/p' "$out/segmentation_refined.ply")"
 refined_f="$(sed -n 's/^element face \([0-9]*\)$/\1/p' "$out/segmentation_refined.ply")"
 check "fandisk: segmentation_refined.ply: ${refined_v:-?} >= $v vertices, ${refined_f:-?} >= $f faces" \
-  [ "${refined_v:-0}" -ge "$v" ] && [ "${refined_f:-0}" -ge "$f" ]
+  [ "${refined_v:-0}" -ge "$v" -a "${refined_f:-0}" -ge "$f" ]
 check "fandisk: segmentation_refined.ply well-formed (triangles, patch_id and colour per face)" \
   ply_header_ok "$out/segmentation_refined.ply" "${refined_v:-0}" "${refined_f:-0}"
 check "fandisk: refined_faces in summary = the refined PLY's faces" \
@@ -225,8 +225,8 @@ check "fandisk: progress lines on stderr" grep -q '^progress: smoothing done in 
 run ply_back "$out/segmentation.ply" --output-dir "$work/ply_back" --quiet
 check "segmentation.ply read back: exit status 0 (stderr: $(tail -n 1 "$work/ply_back.err"))" [ "$rc" -eq 0 ]
 check "segmentation.ply read back: $v vertices, $f faces" \
-  [ "$(json_int "$work/ply_back/summary.json" mesh vertices)" = "$v" ] && \
-  [ "$(json_int "$work/ply_back/summary.json" mesh faces)" = "$f" ]
+  [ "$(json_int "$work/ply_back/summary.json" mesh vertices)" = "$v" -a \
+   "$(json_int "$work/ply_back/summary.json" mesh faces)" = "$f" ]
 check "segmentation.ply read back: same feature lines" \
   cmp -s "$work/ply_back/feature_lines.polylines.txt" "$out/feature_lines.polylines.txt"
 
@@ -243,8 +243,8 @@ done
 run no_ridges "$fandisk" --output-dir "$work/no_ridges" --no-ridges --quiet
 check "--no-ridges: exit status 0" [ "$rc" -eq 0 ]
 check "--no-ridges: 0 ridges, $valleys valleys" \
-  [ "$(json_int "$work/no_ridges/summary.json" feature_lines ridges)" = 0 ] && \
-  [ "$(json_int "$work/no_ridges/summary.json" feature_lines valleys)" = "$valleys" ]
+  [ "$(json_int "$work/no_ridges/summary.json" feature_lines ridges)" = 0 -a \
+   "$(json_int "$work/no_ridges/summary.json" feature_lines valleys)" = "$valleys" ]
 run no_lines "$fandisk" --output-dir "$work/no_lines" --strength-threshold 1e9 --rings 1 --quiet
 check "--strength-threshold 1e9: exit status 0" [ "$rc" -eq 0 ]
 check "--strength-threshold 1e9: no feature lines" \
@@ -263,12 +263,12 @@ check "--alpha 1.0: exit status 0" [ "$rc" -eq 0 ]
 patches_low="$(json_int "$work/alpha_low/summary.json" segmentation patches)"
 patches_high="$(json_int "$work/alpha_high/summary.json" segmentation patches)"
 check "--alpha 0.4 / 1.0: patches ${patches_low:-none} < ${patches_high:-none}" \
-  [ "${patches_low:-0}" -ge 1 ] && [ "${patches_high:-0}" -gt "${patches_low:-0}" ]
+  [ "${patches_low:-0}" -ge 1 -a "${patches_high:-0}" -gt "${patches_low:-0}" ]
 check "--alpha 1.0 recorded in summary" [ "$(json_number "$work/alpha_high/summary.json" options alpha)" = 1.0 ]
 # One patch has no boundary: no curve, nothing split.
 if [ "${patches_low:-0}" -eq 1 ]; then
   check "--alpha 0.4: one patch, no boundary curve" \
-    [ "$(json_int "$work/alpha_low/summary.json" boundaries curves)" = 0 ] && [ ! -s "$work/alpha_low/boundaries.polylines.txt" ]
+    [ "$(json_int "$work/alpha_low/summary.json" boundaries curves)" = 0 -a ! -s "$work/alpha_low/boundaries.polylines.txt" ]
   check "--alpha 0.4: one patch, the refined mesh is the mesh ($header_faces faces)" \
     [ "$(json_int "$work/alpha_low/summary.json" boundaries refined_faces)" = "$header_faces" ]
 fi
@@ -277,13 +277,13 @@ run unsmoothed "$fandisk" --output-dir "$work/unsmoothed" --smoothing-iterations
 us="$work/unsmoothed/summary.json"
 check "--smoothing-iterations 0: exit status 0 (stderr: $(tail -n 1 "$work/unsmoothed.err"))" [ "$rc" -eq 0 ]
 check "--smoothing-iterations 0: recorded in options, no iteration run" \
-  [ "$(json_int "$us" options smoothing_iterations)" = 0 ] && [ "$(json_int "$us" boundaries smoothing_iterations)" = 0 ]
-check "--smoothing-iterations 0: the same $curves curves" [ "$(json_int "$us" boundaries curves)" = "$curves" ] && \
-  [ "$(wc -l < "$work/unsmoothed/boundaries.polylines.txt")" -eq "${curves:-0}" ]
+  [ "$(json_int "$us" options smoothing_iterations)" = 0 -a "$(json_int "$us" boundaries smoothing_iterations)" = 0 ]
+check "--smoothing-iterations 0: the same $curves curves" [ "$(json_int "$us" boundaries curves)" = "$curves" -a \
+   "$(wc -l < "$work/unsmoothed/boundaries.polylines.txt")" -eq "${curves:-0}" ]
 check "--smoothing-iterations 0: length before = after ($(json_number "$us" boundaries length_before))" \
-  [ -n "$(json_number "$us" boundaries length_before)" ] && \
-  [ "$(json_number "$us" boundaries length_before)" = "$(json_number "$us" boundaries length_after)" ] && \
-  [ "$(json_number "$us" boundaries anisotropic_length_before)" = "$(json_number "$us" boundaries anisotropic_length_after)" ]
+  [ -n "$(json_number "$us" boundaries length_before)" -a \
+   "$(json_number "$us" boundaries length_before)" = "$(json_number "$us" boundaries length_after)" -a \
+   "$(json_number "$us" boundaries anisotropic_length_before)" = "$(json_number "$us" boundaries anisotropic_length_after)" ]
 check "--smoothing-iterations 0: the lengths before are those of the smoothed run" \
   [ "$(json_number "$us" boundaries length_before)" = "$(json_number "$summary" boundaries length_before)" ]
 check "--smoothing-iterations 0: the curves differ from the smoothed ones" \
@@ -378,8 +378,8 @@ check "duplicates: notice about the removed vertices" \
 check "duplicates: notice about the removed face" \
   grep -q '^notice: .*removed 1 duplicate faces' "$work/duplicates.err"
 check "duplicates: mesh of 8 vertices and 10 faces" \
-  [ "$(json_int "$work/duplicates/summary.json" mesh vertices)" = 8 ] && \
-  [ "$(json_int "$work/duplicates/summary.json" mesh faces)" = 10 ]
+  [ "$(json_int "$work/duplicates/summary.json" mesh vertices)" = 8 -a \
+   "$(json_int "$work/duplicates/summary.json" mesh faces)" = 10 ]
 vp="$work/duplicates/vertex_patches.txt"; fp="$work/duplicates/face_patches.txt"
 line() { sed -n "$(($2 + 1))p" "$1"; }
 dup_patches="$(json_int "$work/duplicates/summary.json" segmentation patches)"
@@ -402,7 +402,7 @@ check "bow tie: exit status 0 (stderr: $(tail -n 1 "$work/bowtie.err"))" [ "$rc"
 check "bow tie: 6 mesh vertices (point 0 split)" [ "$(json_int "$work/bowtie/summary.json" mesh vertices)" = 6 ]
 check "bow tie: 2 patches" [ "$(json_int "$work/bowtie/summary.json" segmentation patches)" = 2 ]
 check "bow tie: 5 lines in vertex_patches.txt, 2 in face_patches.txt" \
-  [ "$(wc -l < "$work/bowtie/vertex_patches.txt")" -eq 5 ] && [ "$(wc -l < "$work/bowtie/face_patches.txt")" -eq 2 ]
+  [ "$(wc -l < "$work/bowtie/vertex_patches.txt")" -eq 5 -a "$(wc -l < "$work/bowtie/face_patches.txt")" -eq 2 ]
 check "bow tie: point 0 in face 0's patch, points 3 and 4 in face 1's" \
   [ "$(paste -s -d ' ' "$work/bowtie/vertex_patches.txt") / $(paste -s -d ' ' "$work/bowtie/face_patches.txt")" = "0 0 0 1 1 / 0 1" ]
 
@@ -464,7 +464,7 @@ check "tetrahedron.ply: 4 faces" [ "$(json_int "$work/ply/summary.json" mesh fac
 # vertices; --watershed geodesic changes the oversegmentation.
 default_oversegments="$(json_int "$summary" segmentation oversegments)"
 check "fandisk: oversegments in summary (${default_oversegments:-none}), fewer than the $v vertices" \
-  [ "${default_oversegments:-0}" -ge 1 ] && [ "${default_oversegments:-0}" -lt "$v" ]
+  [ "${default_oversegments:-0}" -ge 1 -a "${default_oversegments:-0}" -lt "$v" ]
 run full_graph "$fandisk" --output-dir "$work/full_graph" --full-graph --crease-angle 180 --quiet
 check "--full-graph: exit status 0 (stderr: $(tail -n 1 "$work/full_graph.err"))" [ "$rc" -eq 0 ]
 check "--full-graph: cut cost in summary" [ -n "$(json_number "$work/full_graph/summary.json" segmentation cut_cost)" ]
@@ -477,7 +477,7 @@ check "--watershed geodesic: cut cost in summary" \
   [ -n "$(json_number "$work/geodesic/summary.json" segmentation cut_cost)" ]
 geodesic_oversegments="$(json_int "$work/geodesic/summary.json" segmentation oversegments)"
 check "--watershed geodesic: oversegments (${geodesic_oversegments:-none}) in [1, $v)" \
-  [ "${geodesic_oversegments:-0}" -ge 1 ] && [ "${geodesic_oversegments:-0}" -lt "$v" ]
+  [ "${geodesic_oversegments:-0}" -ge 1 -a "${geodesic_oversegments:-0}" -lt "$v" ]
 check "--watershed geodesic recorded in summary" [ "$(json_get "$work/geodesic/summary.json" options watershed)" = geodesic ]
 run full_graph_watershed "$fandisk" --output-dir "$work/full_graph_watershed" --full-graph --watershed geodesic
 check "--full-graph --watershed: a notice that the watershed has no effect" \
