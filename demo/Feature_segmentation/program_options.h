@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The options of the program `feature_segmentation`: one struct, read once from the
-// command line (subcommands `segment`, the default, and `edit`), and the --help text.
+// command line by Boost.Program_options (subcommands `segment`, the default, `edit` and
+// `batch`), and the --help text.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
 #define CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
@@ -14,7 +15,15 @@
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
 
+#include <boost/program_options/options_description.hpp>
+#include <boost/program_options/parsers.hpp>
+#include <boost/program_options/positional_options.hpp>
+#include <boost/program_options/value_semantic.hpp>
+#include <boost/program_options/variables_map.hpp>
+
+#include <cctype>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -74,6 +83,11 @@ struct Options
   double crease_angle = CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle;
   // most rounds of normal filtering before creases: the library's default
   int crease_filter = CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations;
+  // clean tessellations: crest lines too, and cuts along curvature discontinuities (the
+  // library's defaults)
+  bool crest_lines_on_clean_tessellations =
+    CGAL::Feature_segmentation::internal::Segmentation_options().crest_lines_on_clean_tessellations;
+  bool tangent_discontinuities = CGAL::Feature_segmentation::internal::Segmentation_options().tangent_discontinuities;
   std::string solver = "gaec+klj";
   bool full_graph = false;
   std::string watershed = "anisotropic";
@@ -171,6 +185,15 @@ inline void print_usage(std::ostream& os)
      << "                            before the creases are found; none on clean meshes;\n"
      << "                            0: raw dihedral angles (default: "
      << CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations << ")\n"
+     << "  --crest-lines-on-clean-tessellations\n"
+     << "                            on a clean CAD tessellation cut open along its creases,\n"
+     << "                            also detect crest lines (the paper's features); by\n"
+     << "                            default its feature lines there are its creases and\n"
+     << "                            curvature discontinuities\n"
+     << "  --no-tangent-discontinuities\n"
+     << "                            do not cut clean tessellations along their curvature\n"
+     << "                            discontinuities (a fillet meeting a plane without a\n"
+     << "                            crease)\n"
      << "  --solver NAME             correlation clustering solver: gaec+klj (greedy additive\n"
      << "                            edge contraction, then Kernighan-Lin with joins),\n"
      << "                            gaec, or klj (from singletons) (default: gaec+klj)\n"
@@ -225,242 +248,227 @@ inline void print_usage(std::ostream& os)
      << "the sketch's points apart, as prepare_seconds).\n";
 }
 
-// Strict number parsing: the whole argument must be the number ("1.5x", "", "abc",
+inline void require(bool ok, const std::string& message) { if(!ok) throw Usage_error(message); }
+
+// Strict number parsing: the whole argument must be the number ("1.5x", "", " 1", "abc",
 // "nan" and out-of-range values are refused).
 inline int parse_int(const std::string& option, const std::string& text)
 {
-  std::size_t used = 0;
+  std::size_t used = 0; // stays 0 if stol throws
   long value = 0;
-  try
-  {
-    value = std::stol(text, &used, 10);
-  }
-  catch(const std::exception&)
-  {
-    throw Usage_error(option + " expects an integer (got '" + text + "')");
-  }
-  if(used != text.size() || std::isspace(static_cast<unsigned char>(text[0])))
-    throw Usage_error(option + " expects an integer (got '" + text + "')");
-  if(value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
-    throw Usage_error(option + " is out of range (got '" + text + "')");
+  try { value = std::stol(text, &used, 10); } catch(const std::exception&) {}
+  require(used != 0 && used == text.size() && !std::isspace(static_cast<unsigned char>(text[0])),
+          option + " expects an integer (got '" + text + "')");
+  require(value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max(),
+          option + " is out of range (got '" + text + "')");
   return static_cast<int>(value);
 }
 
 inline double parse_double(const std::string& option, const std::string& text)
 {
-  std::size_t used = 0;
+  std::size_t used = 0; // stays 0 if stod throws
   double value = 0;
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch(const std::exception&)
-  {
-    throw Usage_error(option + " expects a number (got '" + text + "')");
-  }
-  if(used != text.size() || std::isspace(static_cast<unsigned char>(text[0])))
-    throw Usage_error(option + " expects a number (got '" + text + "')");
-  if(!std::isfinite(value))
-    throw Usage_error(option + " expects a finite number (got '" + text + "')");
+  try { value = std::stod(text, &used); } catch(const std::exception&) {}
+  require(used != 0 && used == text.size() && !std::isspace(static_cast<unsigned char>(text[0])),
+          option + " expects a number (got '" + text + "')");
+  require(std::isfinite(value), option + " expects a finite number (got '" + text + "')");
   return value;
+}
+
+namespace po = boost::program_options;
+
+// An option's value as Boost hands it over: `apply` runs at every occurrence, in
+// command-line order (po::store), so the first wrong value is the one reported, a
+// repeated option's last value wins, and the checks and messages stay ours (Boost's
+// typed values refuse a repeated option and word their own errors).
+class Option_value : public po::value_semantic
+{
+public:
+  Option_value(unsigned tokens, std::function<void(const std::string&)> apply)
+    : m_tokens(tokens), m_apply(std::move(apply))
+  {}
+  std::string name() const override { return m_tokens == 0 ? "" : "arg"; }
+  unsigned min_tokens() const override { return m_tokens; }
+  unsigned max_tokens() const override { return m_tokens; }
+  bool is_composing() const override { return false; }
+  bool is_required() const override { return false; }
+  void parse(boost::any& value_store, const std::vector<std::string>& tokens, bool /*utf8*/) const override
+  {
+    m_apply(tokens.empty() ? std::string() : tokens.front());
+    value_store = true; // so that the variables_map tells which options were given
+  }
+  bool apply_default(boost::any&) const override { return false; }
+  void notify(const boost::any&) const override {}
+
+private:
+  unsigned m_tokens;
+  std::function<void(const std::string&)> m_apply;
+};
+
+inline Option_value* flag_option(std::function<void()> f) { return new Option_value(0, [f](const std::string&) { f(); }); }
+inline Option_value* value_option(std::function<void(const std::string&)> f) { return new Option_value(1, std::move(f)); }
+
+// A value that may be anything but empty.
+inline Option_value* text_option(std::string& field, const std::string& if_empty)
+{
+  return value_option([&field, if_empty](const std::string& t) { require(!t.empty(), if_empty); field = t; });
+}
+
+// Two tokens read as before, not as Boost would: "--solver=" is an empty value, which the
+// option's own check names ("--solver must be ...", "--rings expects an integer (got
+// '')"), and "--" an unknown option, not the end of the options.
+inline std::vector<po::option> parse_as_before(std::vector<std::string>& args)
+{
+  const std::string token = args.front();
+  const std::size_t equals = token.find('=');
+  if(token.rfind("--", 0) != 0 || (token != "--" && equals != token.size() - 1))
+    return {};
+  po::option option(equals == std::string::npos || equals == 2 ? "--" : token.substr(2, equals - 2),
+                    std::vector<std::string>(1));
+  option.original_tokens.push_back(token);
+  args.erase(args.begin());
+  return {option};
+}
+
+// The options of one subcommand are refused by the others, not ignored.
+inline void check_scope(const std::string& flag, Command command)
+{
+  if(command != Command::EDIT && (flag == "--port" || flag == "--host" || flag == "--web-root"))
+    throw Usage_error(flag + " is an option of 'edit' (" + program_name + " edit MESH " + flag + " ...)");
+  if(command != Command::BATCH && flag == "--jobs")
+    throw Usage_error("--jobs is an option of 'batch' (" + std::string(program_name) + " batch INPUTS --jobs N)");
+  if(command != Command::BATCH && flag == "--force")
+    throw Usage_error("--force is an option of 'batch'");
 }
 
 inline Options parse_command_line(int argc, char** argv)
 {
-  Options options;
-  bool has_input = false;
-  bool has_watershed = false;
+  Options o;
   int first = 1;
-  if(argc > 1 && std::string(argv[1]) == "edit") { options.command = Command::EDIT; first = 2; }
-  else if(argc > 1 && std::string(argv[1]) == "batch") { options.command = Command::BATCH; first = 2; }
+  if(argc > 1 && std::string(argv[1]) == "edit") { o.command = Command::EDIT; first = 2; }
+  else if(argc > 1 && std::string(argv[1]) == "batch") { o.command = Command::BATCH; first = 2; }
   else if(argc > 1 && std::string(argv[1]) == "segment") first = 2;
-  const bool editing = options.command == Command::EDIT;
-  const bool batch = options.command == Command::BATCH;
-  bool has_output_dir = false;
-  for(int i = first; i < argc; ++i)
-  {
-    std::string arg = argv[i];
-    std::string value;
-    bool has_inline_value = false;
-    if(arg.rfind("--", 0) == 0)
-    {
-      const std::size_t eq = arg.find('=');
-      if(eq != std::string::npos)
-      {
-        value = arg.substr(eq + 1);
-        arg = arg.substr(0, eq);
-        has_inline_value = true;
-      }
-    }
-    auto take_value = [&]() -> std::string {
-      if(has_inline_value)
-        return value;
-      // "--rings --quiet" is a forgotten value, not a folder or number named "--quiet".
-      if(i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
-        throw Usage_error(arg + " expects a value");
-      return argv[++i];
-    };
-    auto refuse_value = [&]() {
-      if(has_inline_value)
-        throw Usage_error(arg + " takes no value");
-    };
+  const bool batch = o.command == Command::BATCH;
+  bool has_input = false;
+  typedef const std::string& Text;
 
-    if(arg == "--help" || arg == "-h") { refuse_value(); options.help = true; }
-    else if(arg == "--quiet") { refuse_value(); options.quiet = true; }
-    else if(arg == "--no-ridges") { refuse_value(); options.ridges = false; }
-    else if(arg == "--no-valleys") { refuse_value(); options.valleys = false; }
-    else if(arg == "--output-dir")
-    {
-      options.output_dir = take_value();
-      has_output_dir = true;
-      if(options.output_dir.empty())
-        throw Usage_error("--output-dir expects a non-empty folder name");
-    }
-    else if(arg == "--rings")
-    {
-      options.rings = parse_int(arg, take_value());
-      if(options.rings < 1)
-        throw Usage_error("--rings must be an integer >= 1 (got " +
-                          std::to_string(options.rings) + ")");
-    }
-    else if(arg == "--radius")
-    {
-      const std::string text = take_value();
-      options.radius = parse_double(arg, text);
-      if(!(options.radius >= 0) || !(options.radius <= 1))
-        throw Usage_error("--radius must be a number in [0, 1] (got " + text + ")");
-    }
-    else if(arg == "--strength-threshold")
-    {
-      const std::string text = take_value();
-      const double x = parse_double(arg, text);
-      if(x < 0)
-        throw Usage_error("--strength-threshold must be >= 0 (got '" + text + "')");
-      options.strength_threshold = x;
-    }
-    else if(arg == "--feature-edges")
-    {
-      options.feature_edges_file = take_value();
-      if(options.feature_edges_file.empty())
-        throw Usage_error("--feature-edges expects a file name");
-    }
-    else if(arg == "--alpha")
-      options.alpha = parse_double(arg, take_value());
-    else if(arg == "--gamma")
-    {
-      const std::string text = take_value();
-      options.gamma = parse_double(arg, text);
-      if(options.gamma < 0)
-        throw Usage_error("--gamma must be >= 0 (got '" + text + "')");
-    }
-    else if(arg == "--crease-angle")
-    {
-      const std::string text = take_value();
-      options.crease_angle = parse_double(arg, text);
-      if(!(options.crease_angle > 0))
-        throw Usage_error("--crease-angle must be > 0 degrees (got '" + text + "')");
-    }
-    else if(arg == "--crease-filter")
-    {
-      const std::string text = take_value();
-      options.crease_filter = parse_int(arg, text);
-      if(options.crease_filter < 0 || options.crease_filter > 1000)
-        throw Usage_error("--crease-filter must be an integer in 0 .. 1000 (got '" + text + "')");
-    }
-    else if(arg == "--solver")
-    {
-      options.solver = take_value();
-      if(options.solver != "gaec+klj" && options.solver != "gaec" && options.solver != "klj")
-        throw Usage_error("--solver must be gaec+klj, gaec or klj (got '" + options.solver + "')");
-    }
-    else if(arg == "--full-graph") { refuse_value(); options.full_graph = true; }
-    else if(arg == "--smoothing-iterations")
-    {
-      const int n = parse_int(arg, take_value());
-      if(n < 0)
-        throw Usage_error("--smoothing-iterations must be an integer >= 0 (got " + std::to_string(n) + ")");
-      options.smoothing_iterations = n;
-    }
-    else if(arg == "--watershed")
-    {
-      options.watershed = take_value();
-      has_watershed = true;
-      if(options.watershed != "anisotropic" && options.watershed != "geodesic")
-        throw Usage_error("--watershed must be anisotropic or geodesic (got '" + options.watershed + "')");
-    }
-    else if(arg == "--edits")
-    {
-      options.edits_file = take_value();
-      if(options.edits_file.empty())
-        throw Usage_error("--edits expects a file name");
-    }
-    else if(arg == "--port" || arg == "--host" || arg == "--web-root")
-    {
-      if(!editing)
-        throw Usage_error(arg + " is an option of 'edit' (" + program_name + " edit MESH " + arg + " ...)");
-      const std::string text = take_value();
-      if(arg == "--port")
-      {
-        options.port = parse_int(arg, text);
-        if(options.port < 0 || options.port > 65535)
-          throw Usage_error("--port must be an integer in 0 .. 65535 (got " + text + ")");
-      }
-      else if(text.empty())
-        throw Usage_error(arg + " expects a non-empty value");
-      else if(arg == "--host")
-        options.host = text;
-      else
-        options.web_root = text;
-    }
-    else if(arg == "--threads")
-    {
-      const std::string text = take_value();
-      options.threads = parse_int(arg, text);
-      if(options.threads < 0 || options.threads > 1024)
-        throw Usage_error("--threads must be an integer in 0 .. 1024 (got " + text + ")");
-    }
-    else if(arg == "--jobs")
-    {
-      if(!batch)
-        throw Usage_error("--jobs is an option of 'batch' (" + std::string(program_name) + " batch INPUTS --jobs N)");
-      const std::string text = take_value();
-      options.jobs = parse_int(arg, text);
-      if(options.jobs < 1 || options.jobs > 1024)
-        throw Usage_error("--jobs must be an integer in 1 .. 1024 (got " + text + ")");
-    }
-    else if(arg == "--force")
-    {
-      refuse_value();
-      if(!batch)
-        throw Usage_error("--force is an option of 'batch'");
-      options.force = true;
-    }
-    else if(arg.size() > 1 && arg[0] == '-')
-      throw Usage_error("unknown option '" + arg + "' (see --help)");
-    else if(batch)
-      options.inputs.push_back(arg);
-    else
-    {
-      if(has_input)
-        throw Usage_error("more than one input mesh ('" + options.input + "' and '" + arg + "')");
-      options.input = arg;
-      has_input = true;
-    }
-  }
-  if(batch && !options.help)
+  po::options_description described;
+  described.add_options()
+    ("help,h", flag_option([&] { o.help = true; }))
+    ("quiet", flag_option([&] { o.quiet = true; }))
+    ("no-ridges", flag_option([&] { o.ridges = false; }))
+    ("no-valleys", flag_option([&] { o.valleys = false; }))
+    ("full-graph", flag_option([&] { o.full_graph = true; }))
+    ("crest-lines-on-clean-tessellations", flag_option([&] { o.crest_lines_on_clean_tessellations = true; }))
+    ("no-tangent-discontinuities", flag_option([&] { o.tangent_discontinuities = false; }))
+    ("force", flag_option([&] { o.force = true; }))
+    ("output-dir", text_option(o.output_dir, "--output-dir expects a non-empty folder name"))
+    ("rings", value_option([&](Text t) {
+       o.rings = parse_int("--rings", t);
+       require(o.rings >= 1, "--rings must be an integer >= 1 (got " + std::to_string(o.rings) + ")"); }))
+    ("radius", value_option([&](Text t) {
+       o.radius = parse_double("--radius", t);
+       require(o.radius >= 0 && o.radius <= 1, "--radius must be a number in [0, 1] (got " + t + ")"); }))
+    ("strength-threshold", value_option([&](Text t) {
+       o.strength_threshold = parse_double("--strength-threshold", t);
+       require(*o.strength_threshold >= 0, "--strength-threshold must be >= 0 (got '" + t + "')"); }))
+    ("feature-edges", text_option(o.feature_edges_file, "--feature-edges expects a file name"))
+    ("alpha", value_option([&](Text t) { o.alpha = parse_double("--alpha", t); }))
+    ("gamma", value_option([&](Text t) {
+       o.gamma = parse_double("--gamma", t);
+       require(o.gamma >= 0, "--gamma must be >= 0 (got '" + t + "')"); }))
+    ("crease-angle", value_option([&](Text t) {
+       o.crease_angle = parse_double("--crease-angle", t);
+       require(o.crease_angle > 0, "--crease-angle must be > 0 degrees (got '" + t + "')"); }))
+    ("crease-filter", value_option([&](Text t) {
+       o.crease_filter = parse_int("--crease-filter", t);
+       require(o.crease_filter >= 0 && o.crease_filter <= 1000,
+               "--crease-filter must be an integer in 0 .. 1000 (got '" + t + "')"); }))
+    ("solver", value_option([&](Text t) {
+       require(t == "gaec+klj" || t == "gaec" || t == "klj", "--solver must be gaec+klj, gaec or klj (got '" + t + "')");
+       o.solver = t; }))
+    ("watershed", value_option([&](Text t) {
+       require(t == "anisotropic" || t == "geodesic", "--watershed must be anisotropic or geodesic (got '" + t + "')");
+       o.watershed = t; }))
+    ("edits", text_option(o.edits_file, "--edits expects a file name"))
+    ("smoothing-iterations", value_option([&](Text t) {
+       const int n = parse_int("--smoothing-iterations", t);
+       require(n >= 0, "--smoothing-iterations must be an integer >= 0 (got " + std::to_string(n) + ")");
+       o.smoothing_iterations = n; }))
+    ("port", value_option([&](Text t) {
+       o.port = parse_int("--port", t);
+       require(o.port >= 0 && o.port <= 65535, "--port must be an integer in 0 .. 65535 (got " + t + ")"); }))
+    ("host", text_option(o.host, "--host expects a non-empty value"))
+    ("web-root", text_option(o.web_root, "--web-root expects a non-empty value"))
+    ("threads", value_option([&](Text t) {
+       o.threads = parse_int("--threads", t);
+       require(o.threads >= 0 && o.threads <= 1024, "--threads must be an integer in 0 .. 1024 (got " + t + ")"); }))
+    ("jobs", value_option([&](Text t) {
+       o.jobs = parse_int("--jobs", t);
+       require(o.jobs >= 1 && o.jobs <= 1024, "--jobs must be an integer in 1 .. 1024 (got " + t + ")"); }))
+    ("input", value_option([&](Text t) { // the positional arguments: the mesh, or batch's inputs
+       require(batch || !has_input, "more than one input mesh ('" + o.input + "' and '" + t + "')");
+       if(batch) o.inputs.push_back(t);
+       else o.input = t;
+       has_input = true; }));
+  po::positional_options_description positional;
+  positional.add("input", -1);
+  // --opt=value and --opt value, -h; exact names only (no prefixes of them)
+  namespace style = po::command_line_style;
+  const int command_line_style = style::allow_long | style::long_allow_adjacent | style::long_allow_next |
+                                 style::allow_short | style::allow_dash_for_short | style::short_allow_next;
+  po::variables_map given;
+  try
   {
-    if(options.inputs.empty())
-      throw Usage_error("batch: no input (give meshes, folders of meshes or list files)");
-    if(!has_output_dir)
-      throw Usage_error("batch: --output-dir DIR is required (one folder per mesh goes into it)");
-    if(!options.edits_file.empty())
-      throw Usage_error("batch: --edits is an option of one mesh, not of a batch");
+    const po::parsed_options parsed = po::command_line_parser(std::vector<std::string>(argv + first, argv + argc))
+                                        .options(described)
+                                        .positional(positional)
+                                        .style(command_line_style)
+                                        .extra_style_parser(&parse_as_before)
+                                        .allow_unregistered()
+                                        .run();
+    for(const po::option& option : parsed.options)
+    {
+      if(option.position_key >= 0)
+        continue;
+      // Unknown options are let through (allow_unregistered) to be named as typed: '-x',
+      // '--x' of '--x=1'; "input" is the positional arguments' name, not an option.
+      const std::string& typed = option.original_tokens.front();
+      if(option.unregistered || option.string_key == "input")
+        throw Usage_error("unknown option '" + typed.substr(0, typed.rfind("--", 0) == 0 ? typed.find('=') : typed.npos) +
+                          "' (see --help)");
+      const std::string flag = "--" + option.string_key;
+      check_scope(flag, o.command);
+      // "--rings --quiet" is a forgotten value, not a folder or number named "--quiet"
+      // (Boost takes it for the value unless it is -h).
+      require(option.original_tokens.size() == 1 || option.value.front().rfind("--", 0) != 0, flag + " expects a value");
+    }
+    po::store(parsed, given);
   }
-  if(!options.ridges && !options.valleys && !options.quiet && !options.help)
+  catch(const po::invalid_syntax& e)
+  {
+    const std::string flag = e.get_option_name();
+    if(e.kind() == po::invalid_syntax::missing_parameter)
+      check_scope(flag, o.command);
+    require(e.kind() != po::invalid_syntax::missing_parameter, flag + " expects a value");
+    require(e.kind() != po::invalid_syntax::extra_parameter, flag + " takes no value");
+    throw Usage_error(e.what());
+  }
+  catch(const po::error& e)
+  {
+    throw Usage_error(e.what());
+  }
+  if(batch && !o.help)
+  {
+    require(!o.inputs.empty(), "batch: no input (give meshes, folders of meshes or list files)");
+    require(given.count("output-dir"), "batch: --output-dir DIR is required (one folder per mesh goes into it)");
+    require(o.edits_file.empty(), "batch: --edits is an option of one mesh, not of a batch");
+  }
+  if(!o.ridges && !o.valleys && !o.quiet && !o.help)
     std::cerr << "notice: --no-ridges and --no-valleys: no crest lines will be detected\n";
-  if(options.full_graph && has_watershed && !options.quiet && !options.help)
+  if(o.full_graph && given.count("watershed") && !o.quiet && !o.help)
     std::cerr << "notice: --full-graph: no oversegmentation, --watershed has no effect\n";
-  return options;
+  return o;
 }
 
 /// The options that decide the segmentation, as command-line flags (" --alpha 0.6 ..."),
@@ -478,6 +486,8 @@ inline std::string segmentation_options_text(const Options& o)
   if(o.full_graph) t += " --full-graph";
   if(!o.ridges) t += " --no-ridges";
   if(!o.valleys) t += " --no-valleys";
+  if(o.crest_lines_on_clean_tessellations) t += " --crest-lines-on-clean-tessellations";
+  if(!o.tangent_discontinuities) t += " --no-tangent-discontinuities";
   if(!o.feature_edges_file.empty()) t += " --feature-edges " + o.feature_edges_file;
   if(o.smoothing_iterations) t += " --smoothing-iterations " + std::to_string(*o.smoothing_iterations);
   return t;
