@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
-# The quality evaluation in one command (issue 6): installs what it needs, builds the
+# The quality evaluation in one command (issues 6 and 13): installs what it needs, builds the
 # evaluation program and the contact-sheet renderer, evaluates fandisk, the paper's
-# models and the ground-truth models (ABC format), and writes
+# models, the ground-truth models (ABC format) and the CAD parts (with their B-rep faces),
+# and writes
 #   OUT/table.md, OUT/table.csv, OUT/robustness.csv   the tables
+#   OUT/cad_parts.md, OUT/cad_parts.csv               the CAD parts at 0, 0.1% and 0.3% noise
+#   OUT/resolution.md, OUT/resolution.csv             fandisk at 13k to 828k faces
 #   OUT/contact_sheets/MODEL.png                       feature lines and every method's patches (a row
 #                                                      per CC variant: default, smoothed, best, smoothed)
 #   OUT/tiles/                                         the pictures' parts (OUT/scenes/, the renderer's
 #                                                      input, is kept with FS_KEEP_SCENES=1)
 # Usage: scripts/run_evaluation.sh [OUT]   (default: out/evaluation)
 # Environment: FEATURE_SEGMENTATION_DATA (default: ../shared/data beside the clone, if
-# present; without it only fandisk is evaluated), FS_BUILD_DIR (default: <source>/build),
+# present; without it only fandisk is evaluated, and its resolution series),
+# FS_BUILD_DIR (default: <source>/build),
 # FS_TILE_SIZE (default 300 pixels per view).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -53,5 +57,6 @@ done
 if [ "${FS_KEEP_SCENES:-0}" != 1 ]; then rm -rf "$out/scenes"; fi
 
 echo
-echo "Tables: $out/table.md, $out/table.csv, $out/robustness.csv"
+echo "Tables: $out/table.md, $out/table.csv, $out/robustness.csv, $out/cad_parts.md, $out/cad_parts.csv,"
+echo "        $out/resolution.md, $out/resolution.csv"
 echo "Contact sheets: $out/contact_sheets/"

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Quality evaluation of the segmentation (issue 6; paper, Sections 5.2-5.3): this
-// package's correlation clustering (full vertex graph, geodesic watershed, anisotropic
-// watershed) side by side with CGAL's sharp_edges_segmentation (angle swept) and CGAL's
-// variational shape approximation, on the same meshes and with the metrics of
-// evaluation/metrics.h:
+// Quality evaluation of the segmentation (issues 6 and 13; paper, Sections 5.2-5.3), in
+// three parts.
+//
+// The quality table: this package's correlation clustering (full vertex graph, geodesic
+// watershed, anisotropic watershed) side by side with CGAL's sharp_edges_segmentation
+// (angle swept) and CGAL's variational shape approximation, on fandisk, the ABC models
+// and the paper's models, with the metrics of evaluation/metrics.h:
 // - every model: patch count, cut cost (Eq. 1, reference weights: alpha 0.6, pruned
 //   lines), coverage of the strong feature lines by the boundaries and redundancy;
 // - models with a ground truth (ABC format: NAME.obj + NAME.yml): boundary precision,
@@ -20,40 +22,58 @@
 // two alphas: the boundaries smoothed (smooth_patch_boundaries(), 20 iterations at most),
 // every face scored with the patch covering most of its area (majority_face_patches());
 // the coverage and redundancy and, with a ground truth, the boundary precision/recall/
-// F-score of the smoothed curves themselves too (the "curve" columns). Without smoothing, a face has the patch of the
-// majority of its vertices (segment_along_features()'s face_patch_map).
-// VSA is given the ground-truth patch count, or without a ground truth the patch count of
-// the default segmentation.
+// F-score of the smoothed curves themselves too (the "curve" columns). Without
+// smoothing, a face has the patch of the majority of its vertices
+// (segment_along_features()'s face_patch_map). VSA is given the ground-truth patch
+// count, or without a ground truth the patch count of the default segmentation.
+// Writes OUT/table.md, OUT/table.csv, OUT/robustness.csv (evaluation/quality_tables.h)
+// and OUT/scenes/MODEL.scene (evaluation/scenes.h; the input of render_scenes, which
+// draws the contact sheets: four tiles a row, the feature lines and the ground truth,
+// then one row per CC variant (default, default with smoothing, best, best with
+// smoothing; smoothed tiles draw the smoothed curves), then the CGAL baselines).
 //
-// Writes OUT/table.md, OUT/table.csv, OUT/robustness.csv and OUT/scenes/MODEL.scene (the
-// input of render_scenes, which draws the contact sheets: four tiles a row, the feature
-// lines and the ground truth, then one row per CC variant (default, default with
-// smoothing, best, best with smoothing; smoothed tiles draw the smoothed curves), then the
-// CGAL baselines).
+// The CAD table (evaluation/cad_parts.h): the parts of DATA/cad against their B-rep
+// faces, and the ABC models after them, by the boundary F-score: this package at its
+// defaults, the paper's pipeline, sharp edges at 20/45/60 degrees and VSA with the true
+// patch count, at the noise levels of --noise; OUT/cad_parts.md and OUT/cad_parts.csv.
+//
+// The resolution series (evaluation/cad_parts.h): fandisk flat-subdivided 0 to 3 times
+// (13k to 828k faces), this package's patch counts and boundary F against the coarse
+// result; OUT/resolution.md and OUT/resolution.csv.
 //
 // Usage: evaluate_quality [--data DIR] [--out DIR] [--only NAME[,NAME...]] [--no-robustness]
-//   DIR (default $FEATURE_SEGMENTATION_DATA): holds paper-models/ and abc/ (ground truth);
-//   without it, fandisk alone is evaluated.
+//                         [--noise X,Y,...] [--alpha A] [--strength-threshold S]
+//                         [--crease-filter N] [--no-tangent] [--crest-lines | --no-crest-lines]
+//   DIR (default $FEATURE_SEGMENTATION_DATA): holds paper-models/, abc/ (ground truth)
+//   and cad/; without it, fandisk alone is evaluated and the CAD table is skipped.
+//   --only names models of the quality table, "cad" (the CAD table) and "resolution"
+//   (the resolution series): `--only cad` is the CAD table alone. The options from
+//   --noise on set the CAD table and the resolution series. --help tells more.
 
 #include "evaluation/abc_ground_truth.h"
+#include "evaluation/cad_parts.h"
 #include "evaluation/methods.h"
+#include "evaluation/quality_tables.h"
+#include "evaluation/report.h"
+#include "evaluation/scenes.h"
 
-#include <CGAL/Feature_segmentation/IO/write_segmentation.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
+#include <boost/program_options.hpp>
+
 #include <algorithm>
-#include <cstdio>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
+#include <functional>
 #include <iostream>
-#include <map>
+#include <optional>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 using namespace fs_evaluation;
@@ -65,8 +85,20 @@ struct Options
 {
   std::string data;
   std::string out = "evaluation";
+  // what --only names: models of the quality table, "cad" (the CAD table), "resolution"
+  // (fandisk's resolution series); empty: everything
   std::set<std::string> only;
   bool robustness = true;
+  Cad_options cad_options;
+
+  bool selected(const std::string& name) const { return only.empty() || only.count(name) > 0; }
+  // whether the quality table is asked for: a model named, or nothing named
+  bool quality_table() const
+  {
+    for(const std::string& name : only)
+      if(name != "cad" && name != "resolution") return true;
+    return only.empty();
+  }
 };
 
 struct Model
@@ -75,143 +107,7 @@ struct Model
   bool has_ground_truth = false;
 };
 
-struct Row
-{
-  std::string model, method, setting, role; // role: default, best, given-count, ground truth
-  bool smoothed = false;
-  std::size_t faces = 0;
-  Scores scores;
-  double seconds = 0;
-};
-
-struct Robust_row
-{
-  std::string model, method, setting;
-  double pruned_vs_unpruned = 0;         // Rand index on the clean mesh
-  double noise[2][2] = {{0, 0}, {0, 0}}; // [level][unpruned]: Rand index to the clean result
-};
-
 const double noise_levels[2] = {0.001, 0.003};
-
-std::string fmt(double v, int digits = 3)
-{
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << v;
-  return s.str();
-}
-
-// Relabels `labels` so that each patch takes the id of the reference patch it overlaps
-// most, largest patches first, when that id is still free: the tiles of one model then
-// colour corresponding patches alike.
-std::vector<std::size_t> match_to_reference(const std::vector<std::size_t>& labels,
-                                            const std::vector<std::size_t>& reference,
-                                            const std::vector<double>& area)
-{
-  std::map<std::size_t, std::map<std::size_t, double> > overlap;
-  std::map<std::size_t, double> size;
-  for(std::size_t f = 0; f < labels.size(); ++f)
-  {
-    overlap[labels[f]][reference[f]] += area[f];
-    size[labels[f]] += area[f];
-  }
-  std::vector<std::pair<double, std::size_t> > order;
-  for(const auto& s : size) order.emplace_back(-s.second, s.first);
-  std::sort(order.begin(), order.end());
-  std::set<std::size_t> taken;
-  std::map<std::size_t, std::size_t> to;
-  std::size_t next = *std::max_element(reference.begin(), reference.end()) + 1;
-  for(const auto& o : order)
-  {
-    std::size_t best = 0;
-    double best_area = -1;
-    for(const auto& c : overlap[o.second])
-      if(c.second > best_area) { best = c.first; best_area = c.second; }
-    to[o.second] = taken.insert(best).second ? best : next++;
-  }
-  std::vector<std::size_t> result(labels.size());
-  for(std::size_t f = 0; f < labels.size(); ++f) result[f] = to[labels[f]];
-  return result;
-}
-
-// The input of render_scenes: the mesh once, then one tile per picture (a label, a
-// colour per face, and segments to draw over the surface).
-class Scene_writer
-{
-public:
-  Scene_writer(const std::string& path, const Mesh& mesh) : m_os(path), m_mesh(mesh)
-  {
-    m_os << "fs_scene 1\nvertices " << mesh.number_of_vertices() << "\n" << std::setprecision(7);
-    for(auto v : vertices(mesh)) m_os << mesh.point(v) << "\n";
-    m_os << "faces " << mesh.number_of_faces() << "\n";
-    for(auto f : faces(mesh))
-    {
-      for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) m_os << v.idx() << " ";
-      m_os << "\n";
-    }
-  }
-  bool good() const { return m_os.good(); }
-
-  // Patches as face colours; with `curves`, the curves are drawn instead of the edges
-  // between faces of different colours.
-  void tile_with_patches(const std::string& label, const std::vector<std::size_t>& face_patch,
-                         const Boundaries* curves = nullptr)
-  {
-    m_os << "tile " << label << "\ncolours\n";
-    char buf[8];
-    for(std::size_t f = 0; f < face_patch.size(); ++f)
-    {
-      const CGAL::IO::Color c = FS::segmentation_colour(face_patch[f]);
-      std::snprintf(buf, sizeof(buf), "%02x%02x%02x", c.red(), c.green(), c.blue());
-      m_os << buf << ((f % 16 == 15) ? "\n" : " ");
-    }
-    m_os << "\n";
-    if(curves == nullptr)
-    {
-      m_os << "segments 0\n";
-      return;
-    }
-    std::vector<std::pair<const std::array<double, 3>*, const std::array<double, 3>*> > segments;
-    for(const auto& c : curves->curves())
-    {
-      const std::size_t n = c.points.size();
-      const std::size_t m = c.is_closed() ? (n > 1 ? n : 0) : (n > 0 ? n - 1 : 0);
-      for(std::size_t i = 0; i < m; ++i) segments.emplace_back(&c.points[i].point, &c.points[(i + 1) % n].point);
-    }
-    m_os << "face_boundaries 0\nsegments " << segments.size() << "\n";
-    for(const auto& sg : segments)
-      m_os << (*sg.first)[0] << " " << (*sg.first)[1] << " " << (*sg.first)[2] << " " << (*sg.second)[0] << " "
-           << (*sg.second)[1] << " " << (*sg.second)[2] << " 141414 2\n";
-  }
-
-  // An empty place in the sheet, so that each CC variant keeps its own row.
-  void blank_tile() { m_os << "blank\n"; }
-
-  // Feature lines over a grey surface: strong ridges red, strong valleys blue, weaker
-  // lines thinner and lighter.
-  void tile_with_lines(const std::string& label, const Lines& lines)
-  {
-    m_os << "tile " << label << "\ncolours uniform d9d9d9\n";
-    std::size_t n = 0;
-    for(const auto& l : lines.lines) n += l.is_closed ? l.points.size() : (l.points.empty() ? 0 : l.points.size() - 1);
-    m_os << "segments " << n << "\n";
-    for(const auto& l : lines.lines)
-    {
-      const bool strong = l.strength >= FS::default_strong_feature_strength;
-      const bool ridge = l.type == FS::Feature_line_type::RIDGE;
-      const char* colour = ridge ? (strong ? "d01010" : "f08080") : (strong ? "1030d0" : "80a0f0");
-      if(l.type == FS::Feature_line_type::USER) colour = "101010";
-      const std::size_t m = l.is_closed ? l.points.size() : (l.points.empty() ? 0 : l.points.size() - 1);
-      for(std::size_t i = 0; i < m; ++i)
-        m_os << l.points[i].point(m_mesh, m_mesh.points()) << " "
-             << l.points[(i + 1) % l.points.size()].point(m_mesh, m_mesh.points()) << " " << colour << " "
-             << ((strong || l.type == FS::Feature_line_type::USER) ? 3 : 1) << "\n";
-    }
-  }
-
-private:
-  std::ofstream m_os;
-  const Mesh& m_mesh;
-};
 
 bool read_model(const Model& model, Mesh& mesh, std::string& error)
 {
@@ -424,111 +320,6 @@ void evaluate(const Model& model, const Options& opt, std::vector<Row>& rows, st
   robust.insert(robust.end(), out.begin(), out.end());
 }
 
-// "alpha 0.6, smoothed (default)"
-std::string setting_text(const Row& r)
-{
-  return r.setting + (r.smoothed ? ", smoothed" : "") + (r.role.empty() ? "" : " (" + r.role + ")");
-}
-
-void write_outputs(const Options& opt, const std::vector<Row>& rows, const std::vector<Robust_row>& robust,
-                   const std::string& machine)
-{
-  const fsys::path out(opt.out);
-  {
-    std::ofstream csv(out / "table.csv");
-    csv << "model,faces,method,setting,role,patches,cut_cost,coverage,redundant_length,redundancy_fraction,"
-           "precision,recall,f_score,rand_index,over_segmentation,under_segmentation,sharp_curve_recall,seconds,"
-           "smoothed,curve_precision,curve_recall,curve_f_score,curve_coverage,curve_redundancy_fraction\n";
-    for(const Row& r : rows)
-    {
-      const Scores& s = r.scores;
-      csv << r.model << "," << r.faces << "," << r.method << ",\"" << r.setting << "\"," << r.role << "," << s.patches
-          << "," << s.cut_cost << "," << s.lines.coverage << "," << s.lines.redundant_length << ","
-          << s.lines.redundancy_fraction() << ",";
-      if(s.has_ground_truth)
-        csv << s.boundary.precision << "," << s.boundary.recall << "," << s.boundary.f_score << ","
-            << s.partition.rand_index << "," << s.partition.over_segmentation << "," << s.partition.under_segmentation
-            << "," << s.sharp_curve_recall;
-      else
-        csv << ",,,,,,";
-      csv << "," << r.seconds << "," << (r.smoothed ? 1 : 0) << ",";
-      if(s.has_curve_scores)
-        csv << s.curve_boundary.precision << "," << s.curve_boundary.recall << "," << s.curve_boundary.f_score;
-      else
-        csv << ",,";
-      csv << ",";
-      if(s.is_smoothed) csv << s.curve_lines.coverage << "," << s.curve_lines.redundancy_fraction();
-      else csv << ",";
-      csv << "\n";
-    }
-  }
-  {
-    std::ofstream csv(out / "robustness.csv");
-    csv << "model,method,setting,ri_pruned_vs_unpruned,ri_noise_0.1%_pruned,ri_noise_0.1%_unpruned,"
-           "ri_noise_0.3%_pruned,ri_noise_0.3%_unpruned\n";
-    for(const Robust_row& r : robust)
-      csv << r.model << "," << r.method << ",\"" << r.setting << "\"," << r.pruned_vs_unpruned << "," << r.noise[0][0]
-          << "," << r.noise[0][1] << "," << r.noise[1][0] << "," << r.noise[1][1] << "\n";
-  }
-  std::ofstream md(out / "table.md");
-  md << "# Segmentation quality\n\nMachine: " << machine << ". Produced by `scripts/run_evaluation.sh` "
-     << "(`evaluate_quality`); tolerance 1% of the bounding-box diagonal; cut cost with the reference weights "
-     << "(alpha 0.6, pruned lines; lower is better); \"default\": alpha 0.6, angle 90 (CGAL's example); \"best\": "
-     << "the best of the sweep (alpha 0.4-1.2, angle 10-90) by boundary F-score with a ground truth, else by the "
-     << "harmonic mean of coverage and 1 - redundancy. \"smoothed\": the same segmentation with its boundaries "
-     << "smoothed (smooth_patch_boundaries, 20 iterations at most) and every face given the patch covering most of "
-     << "its area (majority_face_patches); without it, a face has the patch of the majority of its vertices. Every "
-     << "score is computed on the face patches (the boundary is the chain of mesh edges between faces of different "
-     << "patches), except the cut cost (on the vertex patches) and the curve columns, computed on the smoothed curves "
-     << "themselves (their segments cross the triangles).\n\n";
-  md << "## Against the ground truth\n\n"
-     << "| model | method | setting | patches | boundary P | boundary R | boundary F | Rand index | over | under | "
-        "sharp-curve recall | cut cost | curve P | curve R | curve F |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for(const Row& r : rows)
-    if(r.scores.has_ground_truth)
-    {
-      const Scores& s = r.scores;
-      md << "| " << r.model << " | " << r.method << " | " << setting_text(r)
-         << " | " << s.patches << " | " << fmt(s.boundary.precision) << " | " << fmt(s.boundary.recall) << " | **"
-         << fmt(s.boundary.f_score) << "** | **" << fmt(s.partition.rand_index) << "** | "
-         << s.partition.over_segmentation << " | " << s.partition.under_segmentation << " | "
-         << fmt(s.sharp_curve_recall) << " | " << fmt(s.cut_cost, 2) << " | ";
-      if(s.has_curve_scores)
-        md << fmt(s.curve_boundary.precision) << " | " << fmt(s.curve_boundary.recall) << " | **"
-           << fmt(s.curve_boundary.f_score) << "** |\n";
-      else
-        md << "- | - | - |\n";
-    }
-  md << "\n## Against the feature lines (every model, no ground truth needed)\n\n"
-     << "Coverage: share of the strong feature-line length (strength >= 10) within the tolerance of a patch "
-        "boundary. Redundancy: share of the boundary length farther than the tolerance from every detected line. "
-        "Both on the face patches' boundary edges, and for smoothed rows on the smoothed curves too (curve "
-        "columns).\n\n"
-     << "| model | faces | method | setting | patches | coverage | redundancy | curve coverage | curve redundancy | "
-        "cut cost | seconds |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for(const Row& r : rows)
-    md << "| " << r.model << " | " << r.faces << " | " << r.method << " | " << setting_text(r) << " | "
-       << r.scores.patches << " | " << fmt(r.scores.lines.coverage) << " | " << fmt(r.scores.lines.redundancy_fraction())
-       << " | " << (r.scores.is_smoothed ? fmt(r.scores.curve_lines.coverage) : std::string("-")) << " | "
-       << (r.scores.is_smoothed ? fmt(r.scores.curve_lines.redundancy_fraction()) : std::string("-")) << " | "
-       << fmt(r.scores.cut_cost, 2) << " | " << fmt(r.seconds, 3) << " |\n";
-  if(!robust.empty())
-  {
-    md << "\n## Robustness (paper, Fig. 9)\n\nRand index of each method's result to its own noise-free result "
-          "(1 = unchanged), vertices moved along their normals by a seeded normal deviate of standard deviation "
-          "0.1% and 0.3% of the diagonal, with pruned (default, strength >= 1) and unpruned feature lines; and "
-          "the Rand index between the pruned and unpruned results on the clean mesh. The CGAL baselines do not "
-          "use feature lines (their two columns are the same run).\n\n"
-       << "| model | method | setting | pruned vs unpruned | 0.1% pruned | 0.1% unpruned | 0.3% pruned | "
-          "0.3% unpruned |\n|---|---|---|---|---|---|---|---|\n";
-    for(const Robust_row& r : robust)
-      md << "| " << r.model << " | " << r.method << " | " << r.setting << " | " << fmt(r.pruned_vs_unpruned) << " | "
-         << fmt(r.noise[0][0]) << " | " << fmt(r.noise[0][1]) << " | " << fmt(r.noise[1][0]) << " | "
-         << fmt(r.noise[1][1]) << " |\n";
-  }
-}
-
 std::string machine_description()
 {
   std::ifstream cpuinfo("/proc/cpuinfo");
@@ -542,60 +333,119 @@ std::string machine_description()
   return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores (one used)";
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+// Reads the command line into `opt`. Returns the exit status when the program is to stop
+// there (0 after --help, 2 for a wrong command line), else nothing.
+std::optional<int> read_command_line(int argc, char** argv, Options& opt)
 {
-  Options opt;
-  if(const char* env = std::getenv("FEATURE_SEGMENTATION_DATA")) opt.data = env;
-  for(int i = 1; i < argc; ++i)
+  namespace po = boost::program_options;
+  Cad_options& cad = opt.cad_options;
+  std::string only, noise;
+  for(double sigma : cad.noise) noise += (noise.empty() ? "" : ",") + plain(sigma);
+  bool no_robustness = false, no_tangent = false, crest_lines = false, no_crest_lines = false;
+  po::options_description options("Usage: evaluate_quality [options]  (a negative number as --alpha=-0.5)\nOptions");
+  options.add_options()
+    ("help", "this text")
+    ("data", po::value(&opt.data)->value_name("DIR"),
+     "folder of paper-models/, abc/ and cad/ (default: $FEATURE_SEGMENTATION_DATA; without it, fandisk only and "
+     "no CAD table)")
+    ("out", po::value(&opt.out)->value_name("DIR")->default_value(opt.out), "output folder")
+    ("only", po::value(&only)->value_name("NAME[,NAME...]"),
+     "only these: models of the quality table (fandisk, abc_00000006, bunny, ...), cad (the CAD table), "
+     "resolution (fandisk's resolution series); default: everything")
+    ("no-robustness", po::bool_switch(&no_robustness), "quality table: without the noise columns")
+    ("noise", po::value(&noise)->value_name("X,Y,...")->default_value(noise),
+     "CAD table: the noise levels, standard deviations as fractions of the diagonal")
+    ("alpha", po::value(&cad.alpha)->value_name("A")->default_value(cad.alpha, plain(cad.alpha)),
+     "CAD table and resolution series: alpha of this package (the paper's pipeline keeps 0.6)")
+    ("strength-threshold",
+     po::value(&cad.strength_threshold)->value_name("S")->default_value(cad.strength_threshold,
+                                                                        plain(cad.strength_threshold)),
+     "the same: the crest lines' strength threshold (>= 0)")
+    ("crease-filter", po::value(&cad.crease_filter)->value_name("N")->default_value(cad.crease_filter),
+     "the same, and the paper's pipeline: rounds of normal filtering before the creases are found (0 .. 1000)")
+    ("no-tangent", po::bool_switch(&no_tangent),
+     "the same: without the curvature discontinuities (tangent_discontinuities(false))")
+    ("crest-lines", po::bool_switch(&crest_lines),
+     "the same: crest lines on clean tessellations too (crest_lines_on_clean_tessellations(true))")
+    ("no-crest-lines", po::bool_switch(&no_crest_lines),
+     "the same: no crest lines on clean tessellations (crest_lines_on_clean_tessellations(false)); without "
+     "either, the library's default");
+  try
   {
-    const std::string a = argv[i];
-    if((a == "--data" || a == "--out" || a == "--only") && i + 1 < argc)
+    po::variables_map vm;
+    po::store(po::command_line_parser(argc, argv)
+                .options(options)
+                .style(po::command_line_style::unix_style ^ po::command_line_style::allow_short)
+                .run(),
+              vm);
+    if(vm.count("help"))
     {
-      const std::string v = argv[++i];
-      if(a == "--data") opt.data = v;
-      else if(a == "--out") opt.out = v;
-      else
-      {
-        std::stringstream ss(v);
-        std::string n;
-        while(std::getline(ss, n, ',')) opt.only.insert(n);
-      }
+      std::cout << options;
+      return 0;
     }
-    else if(a == "--no-robustness") opt.robustness = false;
-    else
+    po::notify(vm);
+    if(!std::isfinite(cad.alpha)) throw po::error("--alpha takes a finite number");
+    if(!(cad.strength_threshold >= 0) || !std::isfinite(cad.strength_threshold))
+      throw po::error("--strength-threshold takes a finite number >= 0");
+    if(cad.crease_filter < 0 || cad.crease_filter > 1000)
+      throw po::error("--crease-filter takes an integer in 0 .. 1000");
+    cad.noise.clear();
+    for(const std::string& x : split_commas(noise))
     {
-      std::cerr << "usage: evaluate_quality [--data DIR] [--out DIR] [--only NAME[,NAME...]] [--no-robustness]\n";
-      return 2;
+      char* end = nullptr;
+      const double sigma = std::strtod(x.c_str(), &end);
+      if(x.empty() || *end != '\0' || !(sigma >= 0 && sigma < 1))
+        throw po::error("--noise takes numbers in [0, 1), separated by commas (got '" + noise + "')");
+      cad.noise.push_back(sigma);
     }
+    if(cad.noise.empty()) throw po::error("--noise takes at least one level");
+    if(crest_lines && no_crest_lines) throw po::error("--crest-lines and --no-crest-lines exclude each other");
+    for(const std::string& name : split_commas(only)) opt.only.insert(name);
   }
+  catch(const po::error& e)
+  {
+    std::cerr << "evaluate_quality: " << e.what() << "\n\n" << options;
+    return 2;
+  }
+  opt.robustness = !no_robustness;
+  if(no_tangent) cad.tangent = false;
+  if(crest_lines || no_crest_lines) cad.crest_lines = crest_lines;
+  return std::nullopt;
+}
 
+// The models of the quality table: fandisk, then, from the data folder, the ABC models
+// and the paper's models.
+std::vector<Model> quality_models(const Options& opt)
+{
   std::vector<Model> models;
   models.push_back({"fandisk", std::string(FS_MESH_DIR) + "/fandisk.off", false});
   std::error_code ec;
   if(opt.data.empty() || !fsys::is_directory(opt.data, ec))
+  {
     std::cerr << "evaluate_quality: no data folder (set FEATURE_SEGMENTATION_DATA or --data): fandisk only"
               << std::endl;
-  else
-  {
-    for(const auto& p : ground_truth_models(fsys::path(opt.data) / "abc"))
-      models.push_back({"abc_" + p.stem().string(), p.string(), true});
-    std::vector<fsys::path> paper;
-    const fsys::path dir = fsys::path(opt.data) / "paper-models";
-    if(fsys::is_directory(dir, ec))
-      for(const auto& e : fsys::directory_iterator(dir, ec))
-        if(e.path().extension() == ".off" || e.path().extension() == ".obj") paper.push_back(e.path());
-    std::sort(paper.begin(), paper.end());
-    for(const auto& p : paper) models.push_back({p.stem().string(), p.string(), false});
+    return models;
   }
+  for(const auto& p : ground_truth_models(fsys::path(opt.data) / "abc"))
+    models.push_back({"abc_" + p.stem().string(), p.string(), true});
+  std::vector<fsys::path> paper;
+  const fsys::path dir = fsys::path(opt.data) / "paper-models";
+  if(fsys::is_directory(dir, ec))
+    for(const auto& e : fsys::directory_iterator(dir, ec))
+      if(e.path().extension() == ".off" || e.path().extension() == ".obj") paper.push_back(e.path());
+  std::sort(paper.begin(), paper.end());
+  for(const auto& p : paper) models.push_back({p.stem().string(), p.string(), false});
+  return models;
+}
 
+// The quality table of the models selected; false when none could be evaluated.
+bool run_quality_table(const Options& opt, const std::string& machine)
+{
   std::vector<Row> rows;
   std::vector<Robust_row> robust;
-  fsys::create_directories(opt.out, ec);
-  for(const Model& m : models)
+  for(const Model& m : quality_models(opt))
   {
-    if(!opt.only.empty() && !opt.only.count(m.name)) continue;
+    if(!opt.selected(m.name)) continue;
     try
     {
       evaluate(m, opt, rows, robust);
@@ -608,10 +458,32 @@ int main(int argc, char** argv)
   if(rows.empty())
   {
     std::cerr << "evaluate_quality: no model evaluated" << std::endl;
-    return 1;
+    return false;
   }
-  write_outputs(opt, rows, robust, machine_description());
+  write_outputs(opt.out, rows, robust, machine);
   std::cout << "evaluate_quality: wrote " << (fsys::path(opt.out) / "table.md").string() << ", table.csv, "
             << "robustness.csv and scenes/ (" << rows.size() << " rows)" << std::endl;
-  return 0;
+  return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options opt;
+  if(const char* env = std::getenv("FEATURE_SEGMENTATION_DATA")) opt.data = env;
+  if(const std::optional<int> status = read_command_line(argc, argv, opt)) return *status;
+  std::error_code ec;
+  fsys::create_directories(opt.out, ec);
+  if(ec)
+  {
+    std::cerr << "evaluate_quality: cannot create " << opt.out << ": " << ec.message() << std::endl;
+    return 1;
+  }
+  const std::string machine = machine_description();
+  const bool quality_evaluated = !opt.quality_table() || run_quality_table(opt, machine);
+  if(opt.selected("cad")) run_cad_table(opt.data, opt.out, opt.cad_options, machine);
+  if(opt.selected("resolution"))
+    run_resolution_series(std::string(FS_MESH_DIR) + "/fandisk.off", opt.out, opt.cad_options, machine);
+  return quality_evaluated ? 0 : 1;
 }

@@ -161,7 +161,7 @@ inline Segmentation run_cc(const Prepared_mesh& pm, Cc_variant variant, double a
   FS::segment_along_features(
     mesh, vpatch,
     FS::parameters::alpha(alpha)
-      .crease_angle(180.) // the paper's variants; the crease cut is scored by evaluate_cad_parts
+      .crease_angle(180.) // the paper's variants; the crease cut is scored by the CAD table (cad_parts.h)
       .principal_curvature_map(pm.curvature)
       .feature_lines(std::cref(lines))
       .use_oversegmentation(variant != Cc_variant::FULL_GRAPH)

@@ -1,0 +1,493 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The CAD part of the quality evaluation (issue 13), run by evaluate_quality.
+//
+// The CAD table. The parts of DATA/cad (NAME.obj, a closed triangle mesh meshed from a
+// B-rep, and NAME.labels, the B-rep face of every triangle, in the OBJ's face order),
+// scored by the boundary F-score at 1% of the bounding-box diagonal (compare_boundaries()
+// of metrics.h, on the face patches, against the B-rep faces) for:
+// - this package at its defaults: creases at 20 degrees, normals filtered before the
+//   creases are found (none on a clean mesh), curvature discontinuities, alpha 0.6 (the
+//   command line may change alpha, the strength threshold, the filter, the
+//   discontinuities and the crest lines: Cad_options);
+// - the paper's pipeline (crease_angle 180: crest lines only; fitted on rings alone,
+//   neighborhood_radius 0), alpha 0.6 and the default strength threshold;
+// - CGAL's sharp_edges_segmentation at 20, 45 and 60 degrees;
+// - CGAL's variational shape approximation given the true patch count (seeded);
+// each at the noise levels asked (Gaussian, along the vertex normals, standard deviation
+// relative to the diagonal, seed 1; by default 0, 0.1% and 0.3%). For every part it
+// also gives the share of true boundary length whose dihedral angle is below 20 degrees
+// (tangent-continuous: a fillet meeting a plane), which no crease threshold can see. The
+// ABC models of DATA/abc (NAME.obj with NAME.yml, e.g. the hex nut) follow the CAD
+// parts, outside their mean. Written to OUT/cad_parts.md (the means, then a table per
+// noise level) and OUT/cad_parts.csv (a row per part, noise level and method, then the
+// means), the markdown printed.
+//
+// The resolution series. Fandisk at its 13k faces and flat-subdivided (each triangle into
+// four by its edge midpoints, CGAL's PTQ with the linear mask: the geometry unchanged)
+// once, twice and three times (52k, 207k, 828k faces), segmented by this package at the
+// settings of the CAD table's first column: the patch count of each, and the boundary
+// precision, recall and F-score of each result against the coarse result's boundaries.
+// The meshes differ, so the boundaries are compared as 3D segments
+// (compare_boundaries_across_meshes()). Written to OUT/resolution.md and
+// OUT/resolution.csv, the markdown printed.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_BENCHMARK_CAD_PARTS_H
+#define CGAL_FEATURE_SEGMENTATION_BENCHMARK_CAD_PARTS_H
+
+#include "abc_ground_truth.h"
+#include "methods.h"
+#include "report.h"
+
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fs_evaluation {
+
+/// The settings of the CAD table and of the resolution series: the noise levels, and the
+/// parameters of this package's first column (the library's defaults unless the command
+/// line changes them). The paper's column shares the filter, the discontinuities and the
+/// crest-line switch, but keeps the paper's alpha and strength threshold.
+struct Cad_options
+{
+  std::vector<double> noise = {0., 0.001, 0.003}; ///< standard deviations, fractions of the diagonal
+  int crease_filter = FS::internal::Segmentation_options().crease_filter_iterations;
+  double alpha = FS::internal::Segmentation_options().alpha;
+  double strength_threshold = FS::default_strength_threshold;
+  bool tangent = FS::internal::Segmentation_options().tangent_discontinuities;
+  bool crest_lines = FS::internal::Segmentation_options().crest_lines_on_clean_tessellations;
+};
+
+/// The settings of the first column, for the reports.
+inline std::string settings_text(const Cad_options& o)
+{
+  return "alpha " + plain(o.alpha) + ", strength threshold " + plain(o.strength_threshold) + ", crease filter " +
+         std::to_string(o.crease_filter) + " rounds, curvature discontinuities " + (o.tangent ? "on" : "off") +
+         ", crest lines on clean tessellations " + (o.crest_lines ? "on" : "off");
+}
+
+/// The number of distinct labels.
+template <typename Label>
+std::size_t number_of_distinct(const std::vector<Label>& labels)
+{
+  return std::set<Label>(labels.begin(), labels.end()).size();
+}
+
+/// A part with its ground truth: the patch (B-rep face, ABC surface) of every face.
+struct Cad_part
+{
+  std::string name;
+  Mesh mesh;
+  std::vector<int> labels;
+};
+
+/// Reads NAME.obj with NAME.labels (one label per face, in the OBJ's order) or, with
+/// `abc`, with NAME.yml (ABC format, abc_ground_truth.h; the name gets "abc_" before it).
+/// Returns false with `error` set when the mesh or its labels cannot be read, or when
+/// a face has no label.
+inline bool read_cad_part(const std::filesystem::path& obj, bool abc, Cad_part& part, std::string& error)
+{
+  if(!read_mesh_in_file_order(obj.string(), part.mesh, error)) return false;
+  part.name = (abc ? "abc_" : "") + obj.stem().string();
+  const std::size_t faces = part.mesh.number_of_faces();
+  if(abc)
+  {
+    try
+    {
+      part.labels = read_abc_ground_truth(std::filesystem::path(obj).replace_extension(".yml").string(),
+                                          part.mesh.number_of_vertices(), faces).face_patch;
+    }
+    catch(const std::exception& e)
+    {
+      error = e.what();
+      return false;
+    }
+  }
+  else
+  {
+    std::ifstream in(std::filesystem::path(obj).replace_extension(".labels"));
+    int label;
+    while(in >> label) part.labels.push_back(label);
+  }
+  if(part.labels.size() != faces || *std::min_element(part.labels.begin(), part.labels.end()) < 0)
+  {
+    error = "not one label >= 0 per face (" + std::to_string(part.labels.size()) + " labels, " +
+            std::to_string(faces) + " faces)";
+    return false;
+  }
+  return true;
+}
+
+/// The share of the true boundary length (edges between faces of different labels) whose
+/// dihedral angle is below 20 degrees: tangent-continuous boundaries, which no crease
+/// threshold finds.
+inline double tangent_continuous_share(const Mesh& mesh, const std::vector<int>& labels)
+{
+  double low = 0, total = 0;
+  for(auto e : edges(mesh))
+  {
+    if(is_border(e, mesh)) continue;
+    const auto h = halfedge(e, mesh);
+    const auto f = face(h, mesh), g = face(opposite(h, mesh), mesh);
+    if(labels[f.idx()] == labels[g.idx()]) continue;
+    const double length = std::sqrt(CGAL::squared_distance(mesh.point(source(h, mesh)), mesh.point(target(h, mesh))));
+    const double c = PMP::compute_face_normal(f, mesh) * PMP::compute_face_normal(g, mesh);
+    total += length;
+    if(std::acos((std::max)(-1., (std::min)(1., c))) * 180. / CGAL_PI < 20.) low += length;
+  }
+  return total > 0 ? low / total : 0.;
+}
+
+/// This package on `mesh` at the settings of `options` or, with `paper`, the paper's
+/// pipeline (crease_angle 180: crest lines only, fitted on rings alone; the library's
+/// alpha and strength threshold). Face patches only.
+inline Segmentation run_package(const Mesh& mesh, const Cad_options& options, bool paper)
+{
+  const FS::internal::Segmentation_options library;
+  auto vp = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+  auto fp = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  const auto t0 = std::chrono::steady_clock::now();
+  FS::segment_along_features(mesh, vp,
+                             FS::parameters::crease_angle(paper ? 180. : library.crease_angle)
+                               .alpha(paper ? library.alpha : options.alpha)
+                               .strength_threshold(paper ? FS::default_strength_threshold : options.strength_threshold)
+                               .crease_filter_iterations(options.crease_filter)
+                               .tangent_discontinuities(options.tangent)
+                               .crest_lines_on_clean_tessellations(options.crest_lines)
+                               .neighborhood_radius(paper ? 0. : FS::default_neighborhood_radius)
+                               .face_patch_map(fp));
+  Segmentation s;
+  s.seconds = seconds_since(t0);
+  s.method = paper ? "paper's pipeline" : "this package";
+  s.setting = paper ? "crease angle 180, radius 0" : settings_text(options);
+  s.face_patch.resize(mesh.number_of_faces());
+  for(auto f : faces(mesh)) s.face_patch[f.idx()] = get(fp, f);
+  return s;
+}
+
+/// A method's result on a part: its patch count and boundary scores against the labels.
+struct Cad_score
+{
+  std::size_t patches = 0;
+  FS::Boundary_scores boundary;
+  double seconds = 0;
+};
+
+/// The columns of the CAD table, in the order of run_cad_methods(): (CSV name, header).
+inline const std::vector<std::pair<std::string, std::string> >& cad_methods()
+{
+  static const std::vector<std::pair<std::string, std::string> > methods = {
+    {"default", "this package (defaults)"}, {"paper", "paper's pipeline"}, {"sharp20", "sharp edges 20"},
+    {"sharp45", "sharp edges 45"},          {"sharp60", "sharp edges 60"}, {"vsa", "VSA (true count)"}};
+  return methods;
+}
+
+/// Runs the methods of cad_methods() on `mesh` (a part, maybe noisy) and scores them
+/// against `labels` at 1% of `mesh`'s diagonal.
+inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vector<int>& labels,
+                                              std::size_t true_patches, const Cad_options& options)
+{
+  std::vector<Segmentation> runs;
+  runs.push_back(run_package(mesh, options, false));
+  runs.push_back(run_package(mesh, options, true));
+  for(double angle : {20., 45., 60.}) runs.push_back(run_sharp_edges(mesh, angle));
+  runs.push_back(run_vsa(mesh, true_patches));
+  auto truth =
+    boost::make_function_property_map<face_descriptor>([&labels](face_descriptor f) { return labels[f.idx()]; });
+  std::vector<Cad_score> scores;
+  for(const Segmentation& s : runs)
+  {
+    auto patches = boost::make_function_property_map<face_descriptor>(
+      [&s](face_descriptor f) { return s.face_patch[f.idx()]; });
+    Cad_score r;
+    r.patches = number_of_distinct(s.face_patch);
+    r.boundary = FS::compare_boundaries(mesh, patches, truth, FS::default_boundary_tolerance(mesh));
+    r.seconds = s.seconds;
+    scores.push_back(r);
+  }
+  return scores;
+}
+
+/// The results on one part.
+struct Cad_result
+{
+  std::string name;
+  bool in_mean = true; ///< a CAD part; the ABC models follow the mean
+  std::size_t faces = 0, true_patches = 0;
+  double tangent_share = 0;
+  std::vector<std::vector<Cad_score> > scores; ///< [noise level][method]
+};
+
+/// Reads a part (read_cad_part()) and runs the methods at every noise level.
+inline bool evaluate_cad_part(const std::filesystem::path& obj, bool abc, const Cad_options& options,
+                              Cad_result& result, std::string& error)
+{
+  Cad_part part;
+  if(!read_cad_part(obj, abc, part, error)) return false;
+  result.name = part.name;
+  result.in_mean = !abc;
+  result.faces = part.mesh.number_of_faces();
+  result.true_patches = number_of_distinct(part.labels);
+  result.tangent_share = tangent_continuous_share(part.mesh, part.labels);
+  std::cerr << "evaluate_quality: CAD part " << part.name << " (" << result.faces << " faces)" << std::endl;
+  for(double sigma : options.noise)
+  {
+    // seed 1 at every level, as the CAD numbers of the manual were measured
+    const Mesh mesh = sigma > 0 ? add_normal_noise(part.mesh, sigma, 1) : part.mesh;
+    result.scores.push_back(run_cad_methods(mesh, part.labels, result.true_patches, options));
+  }
+  return true;
+}
+
+/// Writes `text` to `path` and prints it.
+inline void write_and_print(const std::filesystem::path& path, const std::string& text)
+{
+  std::ofstream file(path);
+  file << text;
+  std::cout << "\n" << text << std::flush;
+  if(file) std::cout << "evaluate_quality: wrote " << path.string() << " and its .csv" << std::endl;
+  else std::cerr << "evaluate_quality: cannot write " << path.string() << std::endl;
+}
+
+/// Writes OUT/cad_parts.md and OUT/cad_parts.csv, and prints the markdown.
+inline void write_cad_tables(const std::string& out, const Cad_options& options, const std::vector<Cad_result>& results,
+                             const std::string& machine)
+{
+  const auto& methods = cad_methods();
+  const std::size_t levels = options.noise.size();
+  std::vector<std::vector<double> > mean(levels, std::vector<double>(methods.size(), 0.)); // [level][method]
+  std::size_t parts = 0;
+  for(const Cad_result& r : results)
+    if(r.in_mean)
+    {
+      ++parts;
+      for(std::size_t l = 0; l < levels; ++l)
+        for(std::size_t k = 0; k < methods.size(); ++k) mean[l][k] += r.scores[l][k].boundary.f_score;
+    }
+  for(auto& row : mean)
+    for(double& x : row) x = parts > 0 ? x / double(parts) : 0.;
+
+  Text_table csv;
+  csv.header = {"part", "faces", "true_patches", "tangent_share", "noise", "method",
+                "patches", "precision", "recall", "f", "seconds"};
+  for(const Cad_result& r : results)
+    for(std::size_t l = 0; l < levels; ++l)
+      for(std::size_t k = 0; k < methods.size(); ++k)
+      {
+        const Cad_score& s = r.scores[l][k];
+        csv.rows.push_back({r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share, 6),
+                            plain(options.noise[l]), methods[k].first, std::to_string(s.patches),
+                            fmt(s.boundary.precision, 6), fmt(s.boundary.recall, 6), fmt(s.boundary.f_score, 6),
+                            fmt(s.seconds, 3)});
+      }
+  for(std::size_t l = 0; parts > 0 && l < levels; ++l)
+    for(std::size_t k = 0; k < methods.size(); ++k)
+      csv.rows.push_back({"mean_cad_parts", "", "", "", plain(options.noise[l]), methods[k].first, "", "", "",
+                          fmt(mean[l][k], 6), ""});
+  std::ofstream csv_file(std::filesystem::path(out) / "cad_parts.csv");
+  csv.write_csv(csv_file);
+
+  std::ostringstream md;
+  md << "# CAD parts\n\nMachine: " << machine << ". Produced by `evaluate_quality` (evaluation/cad_parts.h). "
+     << "Boundary F-score at 1% of the bounding-box diagonal against the true patches (the B-rep faces; the ABC "
+        "surfaces), on the face patches, the patch count in parentheses. \"this package (defaults)\": "
+        "segment_along_features() with "
+     << settings_text(options)
+     << "; \"paper's pipeline\": crease_angle 180 (crest lines only), neighborhood_radius 0, alpha 0.6; \"sharp "
+        "edges N\": CGAL's sharp_edges_segmentation at N degrees; \"VSA (true count)\": CGAL's variational shape "
+        "approximation with the true patch count (L21, hierarchical seeding, seeded). \"tang.\": the share of the "
+        "true boundary length whose dihedral angle is below 20 degrees (tangent-continuous), on the clean mesh. "
+        "Noise: every vertex moved along its normal by a normal deviate of the given standard deviation (seed 1). "
+        "The ABC models follow the mean of the CAD parts, outside it.\n\n## Mean boundary F over the "
+     << parts << " CAD parts\n\n";
+  Text_table means;
+  means.header = {"noise (of the diagonal)"};
+  for(const auto& m : methods) means.header.push_back(m.second);
+  for(std::size_t l = 0; l < levels; ++l)
+  {
+    means.rows.push_back({plain(100 * options.noise[l]) + "%"});
+    for(double f : mean[l]) means.rows.back().push_back(fmt(f));
+  }
+  means.write_markdown(md);
+  for(std::size_t l = 0; l < levels; ++l)
+  {
+    md << "\n## Noise " << plain(100 * options.noise[l]) << "% of the diagonal\n\n";
+    Text_table t;
+    t.header = {"part", "faces", "true patches", "tang."};
+    for(const auto& m : methods) t.header.push_back(m.second);
+    const std::vector<std::string> mean_row = [&]() {
+      std::vector<std::string> row = {"mean (" + std::to_string(parts) + " CAD parts)", "", "", ""};
+      for(double f : mean[l]) row.push_back("**" + fmt(f) + "**");
+      return row;
+    }();
+    bool mean_written = parts == 0;
+    for(const Cad_result& r : results)
+    {
+      if(!r.in_mean && !mean_written) t.rows.push_back(mean_row);
+      mean_written = mean_written || !r.in_mean;
+      t.rows.push_back({r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share)});
+      for(const Cad_score& s : r.scores[l])
+        t.rows.back().push_back(fmt(s.boundary.f_score) + " (" + std::to_string(s.patches) + ")");
+    }
+    if(!mean_written) t.rows.push_back(mean_row);
+    t.write_markdown(md);
+  }
+  write_and_print(std::filesystem::path(out) / "cad_parts.md", md.str());
+}
+
+/// The CAD table: evaluates the parts of DATA/cad, then the ABC models of DATA/abc, at
+/// every noise level of `options`; writes OUT/cad_parts.md and OUT/cad_parts.csv and
+/// prints the markdown. Without DATA/cad, says so on the standard output and returns
+/// false (nothing written).
+inline bool run_cad_table(const std::string& data, const std::string& out, const Cad_options& options,
+                          const std::string& machine)
+{
+  namespace fsys = std::filesystem;
+  const fsys::path folder = fsys::path(data) / "cad";
+  std::error_code ec;
+  if(data.empty() || !fsys::is_directory(folder, ec))
+  {
+    std::cout << "evaluate_quality: no CAD parts ("
+              << (data.empty() ? "no data folder: set FEATURE_SEGMENTATION_DATA or --data"
+                               : folder.string() + " absent")
+              << "): CAD table skipped" << std::endl;
+    return false;
+  }
+  std::vector<std::pair<fsys::path, bool> > inputs; // (OBJ, in the ABC format)
+  for(const auto& e : fsys::directory_iterator(folder, ec))
+    if(e.path().extension() == ".obj") inputs.emplace_back(e.path(), false);
+  std::sort(inputs.begin(), inputs.end());
+  for(const fsys::path& p : ground_truth_models(fsys::path(data) / "abc")) inputs.emplace_back(p, true);
+  std::vector<Cad_result> results;
+  for(const auto& input : inputs)
+  {
+    Cad_result r;
+    std::string error;
+    bool ok = false;
+    try
+    {
+      ok = evaluate_cad_part(input.first, input.second, options, r, error);
+    }
+    catch(const std::exception& e)
+    {
+      error = e.what();
+    }
+    if(ok) results.push_back(r);
+    else std::cout << "evaluate_quality: " << input.first.string() << " skipped: " << error << std::endl;
+  }
+  write_cad_tables(out, options, results, machine);
+  return true;
+}
+
+typedef FS::internal::Evaluation_segment Boundary_segment;
+
+/// The patch boundary of a face labelling of `mesh` as 3D segments: the edges between two
+/// faces of different patches (border edges are not boundaries).
+inline std::vector<Boundary_segment> boundary_segments(const Mesh& mesh, const std::vector<std::size_t>& face_patch)
+{
+  auto patches = boost::make_function_property_map<face_descriptor>(
+    [&face_patch](face_descriptor f) { return face_patch[f.idx()]; });
+  return FS::internal::patch_boundary_segments(mesh, patches, get(CGAL::vertex_point, mesh));
+}
+
+/// Boundary precision, recall and F-score of the segments `boundary` against the segments
+/// `reference`, which may lie on different meshes of one surface (one part at two
+/// resolutions), where compare_boundaries() of metrics.h compares two labellings of one
+/// mesh edge by edge. Both boundaries are first cut into pieces no longer than half the
+/// tolerance, so that the points sampled, the pieces' midpoints (each weighing its
+/// piece's length), are as dense along a coarse edge as along a fine one. A piece is
+/// matched when its midpoint lies within `tolerance` of the other boundary; precision is
+/// the matched share of `boundary`'s length, recall that of `reference`'s.
+inline FS::Boundary_scores compare_boundaries_across_meshes(const std::vector<Boundary_segment>& boundary,
+                                                            const std::vector<Boundary_segment>& reference,
+                                                            double tolerance)
+{
+  const auto pieces = [tolerance](const std::vector<Boundary_segment>& segments) {
+    std::vector<Boundary_segment> result;
+    for(const Boundary_segment& s : segments)
+    {
+      const double length = std::sqrt(s.squared_length());
+      const std::size_t n =
+        tolerance > 0 ? (std::max)(std::size_t(1), std::size_t(std::ceil(length / (0.5 * tolerance)))) : 1;
+      const auto step = (s.target() - s.source()) / double(n);
+      for(std::size_t i = 0; i < n; ++i)
+        result.emplace_back(s.source() + double(i) * step, s.source() + double(i + 1) * step);
+    }
+    return result;
+  };
+  return FS::internal::compare_boundary_segments(pieces(boundary), pieces(reference), tolerance);
+}
+
+/// Subdivides `mesh` flat once: every triangle into four by its edge midpoints (CGAL's PTQ
+/// with the linear mask), the geometry unchanged.
+inline void subdivide_flat(Mesh& mesh)
+{
+  CGAL::Subdivision_method_3::PTQ(mesh, CGAL::Linear_mask_3<Mesh>(&mesh, get(CGAL::vertex_point, mesh)),
+                                  CGAL::parameters::number_of_iterations(1));
+}
+
+/// Fandisk's resolution series: the mesh of `fandisk` and its `levels` flat subdivisions,
+/// each segmented by run_package() at `options`, scored against the coarse result; writes
+/// OUT/resolution.md and OUT/resolution.csv and prints the markdown. Returns false,
+/// having said why, when the mesh cannot be read.
+inline bool run_resolution_series(const std::string& fandisk, const std::string& out, const Cad_options& options,
+                                  const std::string& machine, int levels = 3)
+{
+  Mesh mesh;
+  if(!PMP::IO::read_polygon_mesh(fandisk, mesh) || is_empty(mesh) || !CGAL::is_triangle_mesh(mesh))
+  {
+    std::cout << "evaluate_quality: " << fandisk << " is not a readable triangle mesh: resolution series skipped"
+              << std::endl;
+    return false;
+  }
+  const double tolerance = FS::default_boundary_tolerance(mesh); // the geometry, hence the diagonal, stays
+  std::vector<Boundary_segment> coarse;
+  Text_table md, csv;
+  md.header = {"subdivisions", "faces", "patches", "boundary P", "boundary R", "boundary F", "seconds"};
+  csv.header = {"subdivisions", "faces", "patches", "precision", "recall", "f", "seconds"};
+  for(int level = 0; level <= levels; ++level)
+  {
+    if(level > 0) subdivide_flat(mesh);
+    std::cerr << "evaluate_quality: fandisk subdivided " << level << " times (" << mesh.number_of_faces() << " faces)"
+              << std::endl;
+    const Segmentation s = run_package(mesh, options, false);
+    const std::vector<Boundary_segment> boundary = boundary_segments(mesh, s.face_patch);
+    if(level == 0) coarse = boundary;
+    const FS::Boundary_scores b = compare_boundaries_across_meshes(boundary, coarse, tolerance);
+    const std::string faces = std::to_string(mesh.number_of_faces());
+    const std::string patches = std::to_string(number_of_distinct(s.face_patch));
+    md.rows.push_back({std::to_string(level) + (level == 0 ? " (reference)" : ""), faces, patches, fmt(b.precision),
+                       fmt(b.recall), "**" + fmt(b.f_score) + "**", fmt(s.seconds, 2)});
+    csv.rows.push_back({std::to_string(level), faces, patches, fmt(b.precision, 6), fmt(b.recall, 6),
+                        fmt(b.f_score, 6), fmt(s.seconds, 3)});
+  }
+  std::ofstream csv_file(std::filesystem::path(out) / "resolution.csv");
+  csv.write_csv(csv_file);
+  std::ostringstream text;
+  text << "# Resolution series (fandisk)\n\nMachine: " << machine << ". Produced by `evaluate_quality` "
+       << "(evaluation/cad_parts.h): " << fandisk << " and its flat subdivisions (each triangle into four by its "
+       << "edge midpoints, CGAL's PTQ with Linear_mask_3: the geometry unchanged), segmented by this package with "
+       << settings_text(options) << ". Boundary precision, recall and F-score of each result against the boundary "
+       << "of the coarse result, tolerance 1% of the diagonal, the two boundaries compared as 3D segments cut in "
+       << "pieces of at most half the tolerance (compare_boundaries_across_meshes()).\n\n";
+  md.write_markdown(text);
+  write_and_print(std::filesystem::path(out) / "resolution.md", text.str());
+  return true;
+}
+
+} // namespace fs_evaluation
+
+#endif // CGAL_FEATURE_SEGMENTATION_BENCHMARK_CAD_PARTS_H
