@@ -206,6 +206,8 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
       {"gamma", options.gamma},
       {"crease_angle", options.crease_angle},
       {"crease_filter", options.crease_filter},
+      {"tangent_discontinuities", options.tangent_discontinuities},
+      {"crest_lines_on_clean_tessellations", options.crest_lines_on_clean_tessellations},
       {"full_graph", options.full_graph},
       {"watershed", options.watershed},
       {"edits_file", text_or_null(options.edits_file)},
@@ -354,6 +356,8 @@ public:
                           .gamma(options.gamma)
                           .crease_angle(options.crease_angle)
                           .crease_filter_iterations(options.crease_filter)
+                          .tangent_discontinuities(options.tangent_discontinuities)
+                          .crest_lines_on_clean_tessellations(options.crest_lines_on_clean_tessellations)
                           .neighborhood_rings(options.rings)
                           .neighborhood_radius(options.radius)
                           .strength_threshold(options.strength_threshold ? *options.strength_threshold
@@ -463,6 +467,26 @@ public:
     return b;
   }
 
+  /// The patch of every point and face of the input file, in file order (-1: a point no
+  /// face uses), in the boundaries `b` of the current segmentation (see
+  /// Feature_aligned_segmentation::face_patches(b, map) and vertex_patches(b, map)).
+  struct File_patches
+  {
+    std::vector<long> vertices, faces;
+  };
+  File_patches file_patches(const FS::Patch_boundaries<Mesh>& b) const
+  {
+    auto vertex_patch = get(CGAL::dynamic_vertex_property_t<long>(), mesh);
+    auto face_patch = get(CGAL::dynamic_face_property_t<long>(), mesh);
+    segmentation->vertex_patches(b, vertex_patch);
+    segmentation->face_patches(b, face_patch);
+    File_patches file;
+    for(Mesh::Vertex_index v : correspondence.vertex_of_file_point)
+      file.vertices.push_back(v == Mesh::null_vertex() ? -1L : get(vertex_patch, v));
+    for(Mesh::Face_index f : correspondence.face_of_file_face) file.faces.push_back(get(face_patch, f));
+    return file;
+  }
+
   /// The points of a boundary curve; a closed one repeats its first.
   static std::vector<double> curve_coordinates(const FS::Boundary_curve<Mesh>& c)
   {
@@ -493,19 +517,6 @@ public:
     std::error_code ec;
     const FS::Feature_lines<Mesh>& lines = segmentation->feature_lines();
     const Mesh& working_mesh = segmentation->working_mesh();
-    auto vertex_patch = mesh.add_property_map<Mesh::Vertex_index, long>("v:fs_patch", -1).first;
-    auto face_patch = mesh.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
-    segmentation->vertex_patches(vertex_patch);
-    segmentation->face_patches(face_patch);
-
-    // The patch of every point and face of the input file, in file order (-1: a point no
-    // face uses).
-    std::vector<long> file_vertex_patch, file_face_patch;
-    for(Mesh::Vertex_index v : correspondence.vertex_of_file_point)
-      file_vertex_patch.push_back(v == Mesh::null_vertex() ? -1L : get(vertex_patch, v));
-    for(Mesh::Face_index f : correspondence.face_of_file_face)
-      file_face_patch.push_back(get(face_patch, f));
-
     // The boundaries of the final patches, in the metric of the weights, from the
     // segmentation's own precomputation (which knows the sketches' feature points).
     FS::Patch_boundaries<Mesh> boundaries =
@@ -529,6 +540,12 @@ public:
       std::cerr << "boundaries: " << results.number_of_curves << " curves, length "
                 << results.length_before << " -> " << results.length_after << " ("
                 << results.smoothing_iterations_run << " smoothing iterations)" << std::endl;
+
+    // The patches of the final (smoothed) boundaries: every face has the patch covering
+    // most of its area, every vertex its patch after the smoothing.
+    auto face_patch = mesh.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
+    segmentation->face_patches(boundaries, face_patch);
+    const File_patches file = file_patches(boundaries);
 
     Mesh refined;
     auto refined_patch = refined.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
@@ -556,12 +573,12 @@ public:
       write_file(dir / "segmentation_refined.ply",
                  [&](std::ostream& os) { FS::write_PLY_segmentation(os, refined, refined_patch); });
       write_file(dir / "face_patches.txt", [&](std::ostream& os) {
-        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file_face_patch.size()),
-                            CGAL::make_property_map(file_face_patch));
+        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.faces.size()),
+                            CGAL::make_property_map(file.faces));
       });
       write_file(dir / "vertex_patches.txt", [&](std::ostream& os) {
-        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file_vertex_patch.size()),
-                            CGAL::make_property_map(file_vertex_patch));
+        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.vertices.size()),
+                            CGAL::make_property_map(file.vertices));
       });
     });
     // Written last, so that it holds the time of every stage.

@@ -15,6 +15,7 @@ numpy arrays in, numpy arrays out, over the same pipeline as the program
 
 Options (keywords; the program's ``--crease-angle`` is ``crease_angle``): alpha, gamma,
 rings, radius, strength_threshold, ridges, valleys, crease_angle, crease_filter,
+tangent_discontinuities, crest_lines_on_clean_tessellations,
 solver ('gaec+klj', 'gaec', 'klj'), full_graph, watershed ('anisotropic', 'geodesic'),
 smoothing_iterations, feature_edges (a polylines file). Bad input raises ValueError
 with the library's message. The computation releases the GIL: threads segment meshes

@@ -17,7 +17,8 @@ program writes: a row per mesh in input order. Exit status 1 if any mesh failed.
 Program options: --alpha X, --gamma X, --rings N, --radius X, --strength-threshold X,
 --crease-angle D, --crease-filter N, --solver NAME, --watershed NAME,
 --smoothing-iterations N, --feature-edges FILE, and the flags --full-graph,
---no-ridges, --no-valleys.
+--no-ridges, --no-valleys, --no-tangent-discontinuities,
+--crest-lines-on-clean-tessellations.
 """
 import argparse
 import sys
@@ -110,7 +111,8 @@ def main(argv=None):
     parser.add_argument("--quiet", action="store_true", help="no progress lines")
     for name in _VALUED:
         parser.add_argument("--" + name)
-    for flag in ["full-graph", "no-ridges", "no-valleys"]:
+    for flag in ["full-graph", "no-ridges", "no-valleys", "no-tangent-discontinuities",
+                 "crest-lines-on-clean-tessellations"]:
         parser.add_argument("--" + flag, action="store_true")
     a = parser.parse_args(argv)
     if a.workers < 1:
@@ -126,6 +128,10 @@ def main(argv=None):
         options["ridges"] = False
     if a.no_valleys:
         options["valleys"] = False
+    if a.no_tangent_discontinuities:
+        options["tangent_discontinuities"] = False
+    if a.crest_lines_on_clean_tessellations:
+        options["crest_lines_on_clean_tessellations"] = True
     try:
         rows = run(a.inputs, a.output_dir, options, a.scheduler, a.workers, a.force,
                    None if a.quiet else sys.stderr)

@@ -35,12 +35,13 @@ Options options_from_kwargs(const py::kwargs& kwargs)
     std::string key = py::str(item.first);
     const py::handle value = item.second;
     std::string flag = "--" + std::regex_replace(key, std::regex("_"), "-");
-    if(key == "ridges" || key == "valleys" || key == "full_graph")
+    if(key == "ridges" || key == "valleys" || key == "tangent_discontinuities" || key == "full_graph" ||
+       key == "crest_lines_on_clean_tessellations")
     {
       if(!py::isinstance<py::bool_>(value)) throw py::type_error(key + " must be a bool");
       const bool on = value.cast<bool>();
-      if(key == "full_graph") { if(on) args.push_back(flag); }
-      else if(!on) args.push_back("--no-" + key);
+      if(key == "full_graph" || key == "crest_lines_on_clean_tessellations") { if(on) args.push_back(flag); }
+      else if(!on) args.push_back("--no-" + std::regex_replace(key, std::regex("_"), "-"));
       continue;
     }
     static const std::set<std::string> known{"alpha", "gamma", "rings", "radius", "strength_threshold",
@@ -166,23 +167,16 @@ public:
     return r;
   }
 
-  // Per face of the input arrays, in their order (the program's face_patches.txt).
-  py::array_t<std::int64_t> face_patches() const
-  {
-    std::vector<long> out;
-    const auto& seg = *m_pipeline.segmentation;
-    for(Mesh::Face_index f : m_pipeline.correspondence.face_of_file_face) out.push_back(long(seg.patch(f)));
-    return to_array(out);
-  }
+  // Per face of the input arrays, in their order, and per vertex (-1: a vertex no face
+  // uses): the patches of the smoothed boundaries, as the program's face_patches.txt and
+  // vertex_patches.txt.
+  py::array_t<std::int64_t> face_patches() const { return to_array(file_patches().faces); }
+  py::array_t<std::int64_t> vertex_patches() const { return to_array(file_patches().vertices); }
 
-  // Per vertex of the input arrays (-1: a vertex no face uses).
-  py::array_t<std::int64_t> vertex_patches() const
+  Pipeline::File_patches file_patches() const
   {
-    std::vector<long> out;
-    const auto& seg = *m_pipeline.segmentation;
-    for(Mesh::Vertex_index v : m_pipeline.correspondence.vertex_of_file_point)
-      out.push_back(v == Mesh::null_vertex() ? -1L : long(seg.patch(v)));
-    return to_array(out);
+    py::gil_scoped_release release;
+    return m_pipeline.file_patches(m_pipeline.boundaries(true));
   }
 
   // One edit of the edit script; faces are indices of the input arrays' faces.

@@ -103,7 +103,7 @@ def test_program_and_dask_give_the_same_table(inputs, tmp_path):
     assert len(expected) == 25
     assert sum(r["status"] == "done" for r in expected) == 24
     assert [r["status"] for r in expected if "garbage" in r["mesh"]] == ["failed"]
-    assert next(r for r in expected if r["output"] == "fandisk")["patches"] == "22"
+    assert next(r for r in expected if r["output"] == "fandisk")["patches"] == "21"
 
     out = tmp_path / "dask"
     rows = batch.run([str(inputs)], str(out), workers=2, progress=None)
@@ -133,11 +133,12 @@ def test_command_line(inputs, tmp_path):
     env = dict(os.environ)
     ok = subprocess.run([sys.executable, "-m", "feature_segmentation.batch", str(inputs / "fandisk.off"),
                          str(inputs / "box_0.off"), "--output-dir", str(tmp_path / "cli"), "--workers", "1",
-                         "--alpha", "1.0"], env=env, capture_output=True, text=True)
+                         "--alpha", "1.0", "--crest-lines-on-clean-tessellations"], env=env, capture_output=True,
+                        text=True)
     assert ok.returncode == 0, ok.stderr
     assert "progress: [1/2]" in ok.stderr and "s left" in ok.stderr
     rows = table(tmp_path / "cli" / "batch_summary.csv")
-    assert rows[0]["patches"] == "28"  # fandisk at alpha 1
+    assert rows[0]["patches"] == "28"  # fandisk with its crest lines at alpha 1 (21 at the defaults)
     bad = subprocess.run([sys.executable, "-m", "feature_segmentation.batch", str(inputs / "fandisk.off"),
                           "--output-dir", str(tmp_path / "bad"), "--alpha", "nan"], env=env, capture_output=True,
                          text=True)

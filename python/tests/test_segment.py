@@ -37,9 +37,9 @@ def test_segment_equals_the_program(fandisk, tmp_path):
     program_faces, program_vertices = program_patches(FANDISK, tmp_path)
     assert np.array_equal(faces, program_faces)
     assert np.array_equal(vertices, program_vertices)
-    assert result.patches == 22 == faces.max() + 1
+    assert result.patches == 21 == faces.max() + 1  # fandisk's creases and discontinuities bound them
     assert result.faces == 12946 and result.vertices == 6475
-    assert result.crease_edges == 925
+    assert result.crease_edges == 926
     assert set(result.seconds) >= {"load", "segmentation"}
 
 
@@ -48,6 +48,13 @@ def test_options_by_keyword_equal_the_programs(fandisk, tmp_path):
     program_faces, _ = program_patches(FANDISK, tmp_path, "--alpha", "1.0", "--crease-angle", "180", "--radius", "0")
     assert np.array_equal(faces, program_faces)
     assert result.crease_edges == 0
+    # the switches of the creases: crest lines too, no curvature discontinuities
+    faces, _, result = fs.segment(*fandisk, crest_lines_on_clean_tessellations=True, tangent_discontinuities=False)
+    program_faces, _ = program_patches(FANDISK, tmp_path / "switches", "--crest-lines-on-clean-tessellations",
+                                       "--no-tangent-discontinuities")
+    assert np.array_equal(faces, program_faces)
+    assert result.crease_edges == 876  # without the 50 edges of the blends' tangent lines
+    assert result.feature_edges > result.crease_edges  # and the crest lines
 
 
 def test_float32_and_int32_arrays_are_accepted(fandisk):
@@ -90,8 +97,13 @@ def test_a_mesh_the_library_refuses_raises_value_error():
         fs.segment(v, f)
 
 
+# The paper's editing moves the crest lines' alpha_e: on fandisk, a clean CAD tessellation
+# whose feature lines are by default its creases alone, the editing tests ask for them.
+CREST_LINES = {"crest_lines_on_clean_tessellations": True}
+
+
 def test_edits_and_a_save_that_the_program_replays(fandisk, tmp_path):
-    seg = fs.Segmentation(*fandisk)
+    seg = fs.Segmentation(*fandisk, **CREST_LINES)
     assert seg.patches == 22 and seg.alpha == 0.6
     assert seg.set_alpha(1.0) == 28
     patches = seg.face_patches()
@@ -135,7 +147,7 @@ def test_sketch_adds_feature_edges(fandisk):
 
 
 def test_boundaries_feature_lines_and_creases(fandisk):
-    seg = fs.Segmentation(*fandisk)
+    seg = fs.Segmentation(*fandisk, **CREST_LINES)
     curves = seg.boundaries()
     assert curves and all(c.ndim == 2 and c.shape[1] == 3 and len(c) >= 2 for c in curves)
     raw = seg.boundaries(smooth=False)
@@ -143,7 +155,7 @@ def test_boundaries_feature_lines_and_creases(fandisk):
     assert length(curves) < length(raw)  # the smoothing shortens them
     lines = seg.feature_lines()
     assert lines and {line["kind"] for line in lines} <= {"ridge", "valley", "user"}
-    assert seg.creases().shape == (925, 2, 3)
+    assert seg.creases().shape == (926, 2, 3)
 
 
 def test_threads_segment_at_once_with_the_serial_results():

@@ -99,9 +99,14 @@ polylines_well_formed() {
        END { exit bad }' "$1"
 }
 
-# ---- the default run on fandisk --------------------------------------------------------
+# ---- fandisk with its crest lines ------------------------------------------------------
+# At the defaults a clean CAD tessellation such as fandisk is cut along its creases and
+# curvature discontinuities and gets no crest lines (checked below, "the default run");
+# the runs that check feature lines, curves and smoothing ask for the paper's crest lines
+# too, with --crest-lines-on-clean-tessellations ($crest).
+crest=--crest-lines-on-clean-tessellations
 out="$work/fandisk"
-run fandisk "$fandisk" --output-dir "$out"
+run fandisk "$fandisk" --output-dir "$out" $crest
 check "fandisk: exit status 0 (got $rc; stderr: $(tail -n 1 "$work/fandisk.err"))" [ "$rc" -eq 0 ]
 for f in feature_lines.polylines.txt feature_lines.obj summary.json segmentation.ply \
          face_patches.txt vertex_patches.txt boundaries.polylines.txt segmentation_refined.ply; do
@@ -222,7 +227,7 @@ check "fandisk: progress lines on stderr" grep -q '^progress: smoothing done in 
 
 # CGAL's PLY reader (read_polygon_soup, through the program itself) reads it back: the
 # same mesh, so the same feature lines.
-run ply_back "$out/segmentation.ply" --output-dir "$work/ply_back" --quiet
+run ply_back "$out/segmentation.ply" --output-dir "$work/ply_back" $crest --quiet
 check "segmentation.ply read back: exit status 0 (stderr: $(tail -n 1 "$work/ply_back.err"))" [ "$rc" -eq 0 ]
 check "segmentation.ply read back: $v vertices, $f faces" \
   [ "$(json_int "$work/ply_back/summary.json" mesh vertices)" = "$v" -a \
@@ -231,7 +236,7 @@ check "segmentation.ply read back: same feature lines" \
   cmp -s "$work/ply_back/feature_lines.polylines.txt" "$out/feature_lines.polylines.txt"
 
 # Deterministic: a second run gives identical feature-line and segmentation files.
-run fandisk_again "$fandisk" --output-dir "$work/fandisk_again" --quiet
+run fandisk_again "$fandisk" --output-dir "$work/fandisk_again" $crest --quiet
 check "fandisk again: exit status 0" [ "$rc" -eq 0 ]
 check "fandisk again: --quiet prints nothing on stderr" [ ! -s "$work/fandisk_again.err" ]
 for f in feature_lines.polylines.txt feature_lines.obj segmentation.ply face_patches.txt \
@@ -239,13 +244,34 @@ for f in feature_lines.polylines.txt feature_lines.obj segmentation.ply face_pat
   check "fandisk: $f identical over two runs" cmp -s "$out/$f" "$work/fandisk_again/$f"
 done
 
+# ---- the default run on fandisk --------------------------------------------------------
+# A clean CAD tessellation: its feature edges are exactly its crease edges (876 creases
+# and the 50 edges of its blends' tangent lines, as test_tangent_discontinuities finds),
+# no crest line; every patch boundary runs along them, so there is no boundary curve to
+# smooth, and the 21 patches are the regions they bound (every one owns faces).
+run default "$fandisk" --output-dir "$work/default" --quiet
+ds="$work/default/summary.json"
+check "default: exit status 0 (stderr: $(tail -n 1 "$work/default.err"))" [ "$rc" -eq 0 ]
+check "default: no crest line on a clean tessellation ($(json_int "$ds" feature_lines total))" \
+  [ "$(json_int "$ds" feature_lines total)" = 0 -a ! -s "$work/default/feature_lines.polylines.txt" ]
+check "default: 926 crease edges, the only feature edges" \
+  [ "$(json_int "$ds" "" crease_edges)" = 926 -a "$(json_int "$ds" "" feature_edges)" = 926 ]
+check "default: 21 patches ($(json_int "$ds" segmentation patches))" [ "$(json_int "$ds" segmentation patches)" = 21 ]
+check "default: no boundary curve (every boundary is a crease)" \
+  [ "$(json_int "$ds" boundaries curves)" = 0 -a ! -s "$work/default/boundaries.polylines.txt" ]
+check "default: face ids cover exactly [0, 21)" ids_cover "$work/default/face_patches.txt" 21
+check "default: options.crest_lines_on_clean_tessellations false in summary" \
+  [ "$(json_get "$ds" options crest_lines_on_clean_tessellations)" = false ]
+check "--crest-lines-on-clean-tessellations: recorded in summary" \
+  [ "$(json_get "$summary" options crest_lines_on_clean_tessellations)" = true ]
+
 # Options change what is detected: no ridges -> only valleys; a huge threshold -> none.
-run no_ridges "$fandisk" --output-dir "$work/no_ridges" --no-ridges --quiet
+run no_ridges "$fandisk" --output-dir "$work/no_ridges" $crest --no-ridges --quiet
 check "--no-ridges: exit status 0" [ "$rc" -eq 0 ]
 check "--no-ridges: 0 ridges, $valleys valleys" \
   [ "$(json_int "$work/no_ridges/summary.json" feature_lines ridges)" = 0 -a \
    "$(json_int "$work/no_ridges/summary.json" feature_lines valleys)" = "$valleys" ]
-run no_lines "$fandisk" --output-dir "$work/no_lines" --strength-threshold 1e9 --rings 1 --quiet
+run no_lines "$fandisk" --output-dir "$work/no_lines" $crest --strength-threshold 1e9 --rings 1 --quiet
 check "--strength-threshold 1e9: exit status 0" [ "$rc" -eq 0 ]
 check "--strength-threshold 1e9: no feature lines" \
   [ "$(json_int "$work/no_lines/summary.json" feature_lines total)" = 0 ]
@@ -256,9 +282,9 @@ check "--rings 1 recorded in summary" [ "$(json_get "$work/no_lines/summary.json
 # with the default solver: 1 patch at alpha 0.4, more than ten at 1.0; asserted: strictly
 # more patches at 1.0 than at 0.4 (GAEC+KLj is a heuristic, so the direction of the
 # change is what the method promises, not the counts).
-run alpha_low "$fandisk" --output-dir "$work/alpha_low" --alpha 0.4 --quiet
+run alpha_low "$fandisk" --output-dir "$work/alpha_low" $crest --alpha 0.4 --quiet
 check "--alpha 0.4: exit status 0" [ "$rc" -eq 0 ]
-run alpha_high "$fandisk" --output-dir "$work/alpha_high" --alpha 1.0 --quiet
+run alpha_high "$fandisk" --output-dir "$work/alpha_high" $crest --alpha 1.0 --quiet
 check "--alpha 1.0: exit status 0" [ "$rc" -eq 0 ]
 patches_low="$(json_int "$work/alpha_low/summary.json" segmentation patches)"
 patches_high="$(json_int "$work/alpha_high/summary.json" segmentation patches)"
@@ -273,7 +299,7 @@ if [ "${patches_low:-0}" -eq 1 ]; then
     [ "$(json_int "$work/alpha_low/summary.json" boundaries refined_faces)" = "$header_faces" ]
 fi
 # No smoothing: the curves as computed, so the same lengths before and after.
-run unsmoothed "$fandisk" --output-dir "$work/unsmoothed" --smoothing-iterations 0 --quiet
+run unsmoothed "$fandisk" --output-dir "$work/unsmoothed" $crest --smoothing-iterations 0 --quiet
 us="$work/unsmoothed/summary.json"
 check "--smoothing-iterations 0: exit status 0 (stderr: $(tail -n 1 "$work/unsmoothed.err"))" [ "$rc" -eq 0 ]
 check "--smoothing-iterations 0: recorded in options, no iteration run" \
@@ -290,11 +316,11 @@ check "--smoothing-iterations 0: the curves differ from the smoothed ones" \
   bash -c "! cmp -s '$work/unsmoothed/boundaries.polylines.txt' '$out/boundaries.polylines.txt'"
 check "--smoothing-iterations 0: refined faces >= $header_faces" \
   [ "$(json_int "$us" boundaries refined_faces)" -ge "$header_faces" ]
-run gamma "$fandisk" --output-dir "$work/gamma" --gamma 0 --quiet
+run gamma "$fandisk" --output-dir "$work/gamma" $crest --gamma 0 --quiet
 check "--gamma 0: exit status 0" [ "$rc" -eq 0 ]
 check "--gamma 0 recorded in summary" [ "$(json_number "$work/gamma/summary.json" options gamma)" = 0.0 ]
 for solver in gaec klj; do
-  run "solver_$solver" "$fandisk" --output-dir "$work/solver_$solver" --solver "$solver" --quiet
+  run "solver_$solver" "$fandisk" --output-dir "$work/solver_$solver" --solver "$solver" $crest --quiet
   check "--solver $solver: exit status 0 (stderr: $(tail -n 1 "$work/solver_$solver.err"))" [ "$rc" -eq 0 ]
   check "--solver $solver recorded in summary" [ "$(json_get "$work/solver_$solver/summary.json" options solver)" = "$solver" ]
   n="$(json_int "$work/solver_$solver/summary.json" segmentation patches)"
@@ -412,7 +438,7 @@ awk -v V="$header_vertices" '
   NR > 4 && NR <= 4 + 3 * V { c[(NR - 5) % 3] = $1; if ((NR - 4) % 3 == 0) print "v", c[0], c[1], c[2] }
   NR > 4 + 3 * V { if (k == 0) { k = $1; s = "f" } else { s = s " " ($1 + 1); if (--k == 0) print s } }
 ' "$work/fandisk.tokens" > "$work/fandisk.obj"
-run obj "$work/fandisk.obj" --output-dir "$work/obj" --quiet
+run obj "$work/fandisk.obj" --output-dir "$work/obj" $crest --quiet
 check "fandisk.obj: exit status 0 (stderr: $(tail -n 1 "$work/obj.err"))" [ "$rc" -eq 0 ]
 check "fandisk.obj: same vertex count as the OFF file" \
   [ "$(json_int "$work/obj/summary.json" mesh vertices)" = "$header_vertices" ]
@@ -471,7 +497,7 @@ check "--full-graph: cut cost in summary" [ -n "$(json_number "$work/full_graph/
 check "--full-graph: one node per vertex (oversegments = $v)" \
   [ "$(json_int "$work/full_graph/summary.json" segmentation oversegments)" = "$v" ]
 check "--full-graph recorded in summary" [ "$(json_get "$work/full_graph/summary.json" options full_graph)" = true ]
-run geodesic "$fandisk" --output-dir "$work/geodesic" --watershed geodesic --quiet
+run geodesic "$fandisk" --output-dir "$work/geodesic" $crest --watershed geodesic --quiet
 check "--watershed geodesic: exit status 0 (stderr: $(tail -n 1 "$work/geodesic.err"))" [ "$rc" -eq 0 ]
 check "--watershed geodesic: cut cost in summary" \
   [ -n "$(json_number "$work/geodesic/summary.json" segmentation cut_cost)" ]
@@ -496,7 +522,7 @@ merge  ball 0 0 0.3 0.25
 undo
 sketch 0.4 0.25 -0.4   0.4 0.25 0   0.4 0.25 0.4
 EOF
-run edits "$fandisk" --output-dir "$work/edits" --edits "$work/edits.txt"
+run edits "$fandisk" --output-dir "$work/edits" $crest --edits "$work/edits.txt"
 check "--edits: exit status 0 (stderr: $(tail -n 1 "$work/edits.err"))" [ "$rc" -eq 0 ]
 es="$work/edits/summary.json"
 # edit LINE KEY: the value of KEY in the summary's record of the edit on script line LINE.
@@ -532,10 +558,17 @@ check "--edits: the sketch has its 3 points" [ "$(edit 7 points)" = 3 ]
 final_patches="$(json_int "$es" segmentation patches)"
 check "--edits: segmentation.patches ($final_patches) = patches after the last edit ($(edit 7 patches))" \
   [ "$final_patches" = "$(edit 7 patches)" ]
-# Face ids cover every patch; a vertex on a crease takes the patch of its first face's
-# side, so a patch one face wide between creases may have no vertex of its own.
-check "--edits: the patch files are the edited result (face ids cover [0, $final_patches))" \
-  ids_cover "$work/edits/face_patches.txt" "$final_patches"
+# The patch files are the edited result. A face takes the patch covering most of its
+# area under the smoothed boundaries, so a patch narrower than half a triangle (the
+# sketch's) may own no face; the refined mesh, whose faces lie in exactly one patch,
+# has every patch. A vertex on a crease takes the patch of its first face's side, so a
+# patch one face wide between creases may have no vertex of its own.
+check "--edits: the patch files are the edited result (face ids in [0, $final_patches))" \
+  ids_in_range "$work/edits/face_patches.txt" "$final_patches"
+check "--edits: the refined mesh has every patch of the edited result, [0, $final_patches)" \
+  ids_cover <(awk -v nv="$(sed -n 's/^element vertex \([0-9]*\)$/\1/p' "$work/edits/segmentation_refined.ply")" \
+                'p && ++row > nv { print $5 } /^end_header$/ { p = 1 }' "$work/edits/segmentation_refined.ply") \
+            "$final_patches"
 check "--edits: vertex ids in [0, $final_patches)" ids_in_range "$work/edits/vertex_patches.txt" "$final_patches"
 check "--edits: a progress line per edit on stderr" [ "$(grep -c '^edit .*edits.txt:[0-9]*: ' "$work/edits.err")" -eq 5 ]
 # A face of the file is all the triangles it became: the box's quads 0 and 4 are 4
@@ -609,7 +642,7 @@ expect_error() {
 
 # Threads: the same outputs at 1, 2 and 8 threads as at the default (all cores).
 for n in 1 2 8; do
-  run "threads$n" "$fandisk" --output-dir "$work/threads$n" --threads "$n" --quiet
+  run "threads$n" "$fandisk" --output-dir "$work/threads$n" --threads "$n" $crest --quiet
   check "--threads $n: exit status 0" [ "$rc" -eq 0 ]
   check "--threads $n: the same face_patches.txt as the default run" \
     cmp -s "$work/threads$n/face_patches.txt" "$out/face_patches.txt"
@@ -646,7 +679,7 @@ expect_error edits_number           1 "number\.edits:1: ball: 'zero' is not a nu
 expect_error edits_infinite         1 "infinite\.edits:2: alpha: 'inf' is not a finite number" "$fandisk" --edits "$bad/infinite.edits"
 expect_error edits_nan              1 "nan\.edits:1: scale: 'nan' is not a finite number" "$fandisk" --edits "$bad/nan.edits"
 expect_error edits_undo_history     1 'undo65\.edits:130: undo: cannot take back line 1: the segmentation keeps the last 64 edits only' "$fandisk" --edits "$bad/undo65.edits"
-run undo64 "$fandisk" --output-dir "$work/undo64" --edits "$work/undo64.edits" --quiet
+run undo64 "$fandisk" --output-dir "$work/undo64" $crest --edits "$work/undo64.edits" --quiet
 check "64 edits and 64 undos: exit status 0 (stderr: $(tail -n 1 "$work/undo64.err"))" [ "$rc" -eq 0 ]
 check "64 edits and 64 undos: the automatic patches ($(json_int "$work/undo64/summary.json" segmentation automatic_patches)) are back" \
   [ "$(json_int "$work/undo64/summary.json" segmentation patches)" = "$(json_int "$work/undo64/summary.json" segmentation automatic_patches)" ]

@@ -2,8 +2,10 @@
 // crease_angle or more (20 degrees, the default; 180 is none). Boxes give exact answers: their six faces, whatever the
 // resolution and however thin the box, with every triangle on its own side.
 #include <boost/test/unit_test.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/smooth_boundaries.h>
 #include <CGAL/Feature_segmentation/internal/crease_cut.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -11,6 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include "test_meshes.h"
 
@@ -28,21 +31,28 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Surface_mesh<Epick::Point_3> SM;
 typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
 
-// Whether the face patches are exactly the box's sides: as many patches as sides, and
-// two faces share a patch if and only if they share a side.
-template <typename Mesh>
-bool patches_are_sides(const Mesh& m, const FS::Feature_aligned_segmentation<Mesh>& seg,
-                       const std::vector<int>& side)
+// Whether the face patches are exactly the sides of a box (or any solid with
+// `number_of_sides` faces): as many patches as sides, and two faces share a patch if and
+// only if they share a side.
+template <typename Mesh, typename PatchOf>
+bool patches_are_sides(const Mesh& m, PatchOf patch_of, const std::vector<int>& side, std::size_t number_of_sides)
 {
   std::set<std::pair<std::size_t, int> > pairs;
   std::set<std::size_t> patches;
   std::size_t i = 0;
   for(auto f : faces(m))
   {
-    pairs.insert({ seg.patch(f), side[i++] });
-    patches.insert(seg.patch(f));
+    pairs.insert({ patch_of(f), side[i++] });
+    patches.insert(patch_of(f));
   }
-  return pairs.size() == 6 && patches.size() == 6;
+  return pairs.size() == number_of_sides && patches.size() == number_of_sides;
+}
+
+template <typename Mesh>
+bool patches_are_sides(const Mesh& m, const FS::Feature_aligned_segmentation<Mesh>& seg,
+                       const std::vector<int>& side, std::size_t number_of_sides = 6)
+{
+  return patches_are_sides(m, [&](auto f) { return seg.patch(f); }, side, number_of_sides);
 }
 
 template <typename Mesh>
@@ -70,6 +80,39 @@ void box_is_its_six_sides(double a, double b, double c, int n)
       BOOST_TEST(seg.alpha(e) == 0.6);
     }
   BOOST_TEST(creases == std::size_t(12 * n));
+}
+
+// The plate [0,1]x[0,0.6]x[0,0.2] pierced by a slot [0.45,0.46]x[0.1,0.5], each grid cell
+// refined `refine` times in x and y (and the walls in as many layers): the slot is 0.01
+// wide, narrower than the curvature fit's radius (1% of the diagonal, 0.0118), and its
+// walls face each other across it.
+template <typename Mesh>
+void slotted_plate_is_its_ten_faces(int refine)
+{
+  auto breakpoints = [&](std::vector<double> v) {
+    std::vector<double> r;
+    for(std::size_t i = 0; i + 1 < v.size(); ++i)
+      for(int k = 0; k < refine; ++k) r.push_back(v[i] + (v[i + 1] - v[i]) * k / refine);
+    r.push_back(v.back());
+    return r;
+  };
+  const std::vector<double> xs = breakpoints({0, 0.1, 0.2, 0.3, 0.4, 0.45, 0.46, 0.5, 0.6, 0.7, 0.8, 0.9, 1.});
+  const std::vector<double> ys = breakpoints({0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6});
+  std::vector<int> side;
+  const Mesh m = fs_test::to_mesh<Mesh>(
+    fs_test::slotted_plate(xs, ys, 5 * refine, 6 * refine, 1 * refine, 5 * refine, 0.2, 2 * refine, side));
+  BOOST_REQUIRE(CGAL::is_closed(m));
+  FS::Feature_aligned_segmentation<Mesh> seg(m); // the defaults
+  BOOST_TEST(seg.number_of_patches() == 10u);
+  BOOST_TEST(patches_are_sides(m, seg, side, 10));
+  // the face rule of the final boundaries: every boundary is a crease, a border of the
+  // working mesh, so the smoothing has nothing to move and every face keeps its side
+  FS::Patch_boundaries<Mesh> b = seg.patch_boundaries();
+  BOOST_TEST(b.curves().empty());
+  FS::smooth_patch_boundaries(b);
+  std::map<typename boost::graph_traits<Mesh>::face_descriptor, std::size_t> patch;
+  seg.face_patches(b, boost::make_assoc_property_map(patch));
+  BOOST_TEST(patches_are_sides(m, [&](auto f) { return patch.at(f); }, side, 10));
 }
 
 // The box of box() with noise along the normals: every vertex inside a side (not on a
@@ -108,6 +151,15 @@ BOOST_AUTO_TEST_CASE(thin_plate_keeps_its_rim)
 {
   box_is_its_six_sides<SM>(1., 1., 0.02, 10);
   box_is_its_six_sides<Poly>(1., 0.5, 0.01, 8);
+}
+
+// A plate with a thin slot, at two resolutions: exactly its ten faces (top, bottom, four
+// outer walls, the slot's four walls), every triangle in its own face's patch.
+BOOST_AUTO_TEST_CASE(plate_with_a_thin_slot_is_its_ten_faces)
+{
+  slotted_plate_is_its_ten_faces<SM>(1);
+  slotted_plate_is_its_ten_faces<SM>(2); // the same shape, finer: the same patches
+  slotted_plate_is_its_ten_faces<Poly>(1);
 }
 
 BOOST_AUTO_TEST_CASE(crease_ties_follow_alpha_edits)

@@ -115,6 +115,66 @@ inline Soup box(double a, double b, double c, int n, std::vector<int>& side)
   return s;
 }
 
+// A plate pierced by a rectangular slot: the cells of the grid xs x ys (sorted
+// breakpoints, so cells may be of any width) but those with i0 <= i < i1 and
+// j0 <= j < j1, extruded from z = 0 to z = height in nz layers; triangles oriented
+// outwards. Its ten faces are the top, the bottom, four outer walls and the slot's four
+// walls; `side` receives the face (0..9) of every triangle, in face order.
+inline Soup slotted_plate(const std::vector<double>& xs, const std::vector<double>& ys, int i0, int i1, int j0,
+                          int j1, double height, int nz, std::vector<int>& side)
+{
+  Soup s;
+  std::map<std::array<int, 3>, std::size_t> id;
+  auto point = [&](int i, int j, int k) {
+    const std::array<int, 3> q{ i, j, k };
+    auto it = id.find(q);
+    if(it != id.end()) return it->second;
+    s.points.push_back({ xs[i], ys[j], height * k / nz });
+    return id[q] = s.points.size() - 1;
+  };
+  const int nx = int(xs.size()) - 1, ny = int(ys.size()) - 1;
+  auto kept = [&](int i, int j) {
+    return i >= 0 && j >= 0 && i < nx && j < ny && !(i >= i0 && i < i1 && j >= j0 && j < j1);
+  };
+  side.clear();
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j)
+      if(kept(i, j))
+        for(int top = 0; top < 2; ++top)
+        {
+          const int k = top ? nz : 0;
+          const std::size_t a = point(i, j, k), b = point(i + 1, j, k), c = point(i + 1, j + 1, k),
+                            d = point(i, j + 1, k);
+          if(top) { s.faces.push_back({ a, b, c }); s.faces.push_back({ a, c, d }); }
+          else    { s.faces.push_back({ a, c, b }); s.faces.push_back({ a, d, c }); }
+          side.insert(side.end(), 2, top);
+        }
+  // A wall quad on every grid edge between a kept cell and a removed or outside one,
+  // walked with the kept cell on the left: (p, q) then up, outward on the right.
+  auto wall = [&](int pi, int pj, int qi, int qj, int face) {
+    for(int k = 0; k < nz; ++k)
+    {
+      const std::size_t p0 = point(pi, pj, k), q0 = point(qi, qj, k), q1 = point(qi, qj, k + 1),
+                        p1 = point(pi, pj, k + 1);
+      s.faces.push_back({ p0, q0, q1 });
+      s.faces.push_back({ p0, q1, p1 });
+      side.insert(side.end(), 2, face);
+    }
+  };
+  // faces 2..5: the outer walls facing -y, +x, +y, -x; 6..9: the slot's walls (a wall
+  // below a kept cell of the slot's columns faces -y into the slot, and so on)
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j)
+    {
+      if(!kept(i, j)) continue;
+      if(!kept(i, j - 1)) wall(i, j, i + 1, j, j == 0 ? 2 : 8);              // faces -y
+      if(!kept(i + 1, j)) wall(i + 1, j, i + 1, j + 1, i + 1 == nx ? 3 : 9); // faces +x
+      if(!kept(i, j + 1)) wall(i + 1, j + 1, i, j + 1, j + 1 == ny ? 4 : 6); // faces +y
+      if(!kept(i - 1, j)) wall(i, j + 1, i, j, i == 0 ? 5 : 7);              // faces -x
+    }
+  return s;
+}
+
 // Icosahedron subdivided `level` times and projected on the sphere of radius r (outward).
 inline Soup icosphere(double r, int level)
 {

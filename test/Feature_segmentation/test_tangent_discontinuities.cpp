@@ -118,18 +118,21 @@ BOOST_AUTO_TEST_CASE(cylinder_has_no_discontinuity)
   BOOST_TEST(seg.number_of_crease_edges() == 0u);
 }
 
-// crest_lines_on_clean_tessellations(false): on fandisk, a clean tessellation cut open
-// along creases, the feature edges are then exactly the creases and discontinuities.
+// On fandisk, a clean tessellation cut open along creases, the feature edges are by
+// default exactly the creases and discontinuities; crest_lines_on_clean_tessellations(true)
+// adds the crest lines (the paper's features).
 BOOST_AUTO_TEST_CASE(clean_tessellation_without_crest_lines)
 {
   SM m;
   BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m));
-  FS::Feature_aligned_segmentation<SM> with(m), without(m, FS::parameters::crest_lines_on_clean_tessellations(false));
-  BOOST_TEST(with.number_of_crease_edges() == 925u); // 875 creases and 50 discontinuity edges
+  FS::Feature_aligned_segmentation<SM> with(m, FS::parameters::crest_lines_on_clean_tessellations(true)), without(m);
+  BOOST_TEST(with.number_of_crease_edges() == 926u); // 876 creases and 50 discontinuity edges
   BOOST_TEST(with.number_of_feature_edges() > with.number_of_crease_edges()); // and crest lines
+  BOOST_TEST(with.feature_lines().lines.size() > 0u);
   BOOST_TEST(without.number_of_crease_edges() == with.number_of_crease_edges());
   BOOST_TEST(without.number_of_feature_edges() == without.number_of_crease_edges());
-  BOOST_TEST(without.number_of_patches() == 20u);
+  BOOST_TEST(without.feature_lines().lines.size() == 0u);
+  BOOST_TEST(without.number_of_patches() == 21u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

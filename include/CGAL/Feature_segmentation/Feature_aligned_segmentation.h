@@ -14,6 +14,7 @@
 #include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/Solver_sequence.h>
 #include <CGAL/Feature_segmentation/Watershed_distance.h>
+#include <CGAL/Feature_segmentation/internal/boundary_refinement_impl.h>
 #include <CGAL/Feature_segmentation/internal/crease_cut.h>
 #include <CGAL/Feature_segmentation/internal/face_patch_rule.h>
 #include <CGAL/Feature_segmentation/internal/oversegmentation_impl.h>
@@ -154,6 +155,38 @@ public:
     const internal::Mesh_indexing<TriangleMesh>& in = input_indexing();
     for(std::size_t f = 0; f < in.number_of_faces(); ++f)
       put(map, in.face_at(f), static_cast<Id>(patch(in.face_at(f))));
+  }
+  /// Writes the patch of every face as the boundaries `b` cut it: the patch covering most
+  /// of its area (`majority_face_patches()`), into a `WritablePropertyMap` from
+  /// `face_descriptor`. With `b` smoothed (`smooth_patch_boundaries()`), these are the
+  /// patches of the final boundaries: a face the smoothed boundary leaves to one side
+  /// takes that side, to within half a triangle, where the vertex majority of
+  /// `face_patches(map)` zigzags along the unsmoothed cut. Along a crease every face
+  /// keeps its own side, as in `face_patches(map)`.
+  /// \pre `b` was made by `patch_boundaries()` of this object in its current state
+  template <typename FacePatchMap>
+  void face_patches(const Patch_boundaries<TriangleMesh>& b, FacePatchMap map) const
+  {
+    CGAL_precondition(&b.mesh() == &working_mesh() && b.state().number_of_faces() == m_data.idx.number_of_faces());
+    typedef typename boost::property_traits<FacePatchMap>::value_type Id;
+    const internal::Mesh_indexing<TriangleMesh>& in = input_indexing();
+    // the faces of working_mesh() are those of the input, in the same order
+    for(std::size_t f = 0; f < in.number_of_faces(); ++f)
+      put(map, in.face_at(f), static_cast<Id>(internal::majority_patch(b.state(), f)));
+  }
+  /// Writes the patch of every vertex in the boundaries `b`, into a `WritablePropertyMap`
+  /// from `vertex_descriptor`: after `smooth_patch_boundaries()`, a vertex next to a
+  /// boundary may have moved to the neighbouring patch (see there). A vertex on a crease
+  /// has the patch of its copy in the sector of its first face, as in `vertex_patches(map)`.
+  /// \pre `b` was made by `patch_boundaries()` of this object in its current state
+  template <typename VertexPatchMap>
+  void vertex_patches(const Patch_boundaries<TriangleMesh>& b, VertexPatchMap map) const
+  {
+    CGAL_precondition(&b.mesh() == &working_mesh() &&
+                      b.state().number_of_vertices() == m_data.idx.number_of_vertices());
+    typedef typename boost::property_traits<VertexPatchMap>::value_type Id;
+    for(std::size_t v = 0; v < input_indexing().number_of_vertices(); ++v)
+      put(map, input_indexing().vertex_at(v), static_cast<Id>(b.state().labels[working_vertex(v)]));
   }
   /// The cut cost (Eq. 1) of the current segmentation under the current weights (the
   /// crease ties included).

@@ -44,10 +44,10 @@ struct Segmentation_options
   // on a clean tessellation, the curvature discontinuities (a fillet meeting a plane
   // without a crease) join the creases (see the manual, Creases)
   bool tangent_discontinuities = true;
-  // crest lines also on a clean tessellation cut open along creases, as the paper
-  // (false: its feature lines are its creases and discontinuities; see the manual, CAD
-  // Parts)
-  bool crest_lines_on_clean_tessellations = true;
+  // crest lines also on a clean tessellation cut open along creases, as the paper; by
+  // default its feature lines are its creases and curvature discontinuities, which bound
+  // its B-rep faces (crest lines cut curved faces apart: see the manual, CAD Parts)
+  bool crest_lines_on_clean_tessellations = false;
   // set by the class, not by a parameter: whether prepare_segmentation_data detects
   // crest lines when no feature is given
   bool detect_crest_lines = true;

@@ -209,9 +209,10 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, cons
   return angle;
 }
 
-// The test that tells a crease from a strong bend of a smooth surface: within a ball
-// around a candidate edge (radius crease_gap_radius of the diagonal, at least two mean
-// edge lengths), the edges bending by [crease_gap_band * crease_angle, crease_angle)
+// The test that tells a crease from a strong bend of a smooth surface: within the ball
+// around a candidate edge's midpoint (radius crease_gap_radius of the diagonal, at least
+// two mean edge lengths), on the surface reached from the candidate, the edges bending
+// by [crease_gap_band * crease_angle, crease_angle)
 // may have at most crease_gap_ratio times the length of the candidates. A CAD
 // tessellation leaves a gap below its creases (on the 14 parts of the evaluation, no
 // edge between 15 and 30 degrees apart from the creases); a coarse or scanned smooth
@@ -238,14 +239,13 @@ constexpr int crease_smooth_filter_iterations = 10;
 template <typename TriangleMesh, typename VPM>
 void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
                            const std::vector<double>& raw, double raw_roughness, double crease_angle,
-                           const std::vector<Eigen::Vector3d>& centroid, std::vector<char>& is_crease)
+                           std::vector<char>& is_crease)
 {
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
   if(ne == 0) return;
   const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
-  std::vector<double> len(ne);
-  std::vector<Eigen::Vector3d> mid(ne);
+  std::vector<Eigen::Vector3d> end0(ne), end1(ne);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
   double mean_edge = 0;
   for(std::size_t e = 0; e < ne; ++e)
@@ -253,16 +253,26 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
     const auto h = halfedge(idx.edge_at(e), tm);
     const auto& p = get(vpm, source(h, tm));
     const auto& q = get(vpm, target(h, tm));
-    const Eigen::Vector3d a(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    const Eigen::Vector3d b(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    mid[e] = 0.5 * (a + b);
-    len[e] = (a - b).norm();
-    mean_edge += len[e];
-    lo = lo.cwiseMin(a).cwiseMin(b);
-    hi = hi.cwiseMax(a).cwiseMax(b);
+    end0[e] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    end1[e] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+    lo = lo.cwiseMin(end0[e]).cwiseMin(end1[e]);
+    hi = hi.cwiseMax(end0[e]).cwiseMax(end1[e]);
+    mean_edge += (end1[e] - end0[e]).norm();
   }
   mean_edge /= double(ne);
+  // on a coarse mesh the ball must still reach the candidate's neighbours
   const double r = (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
+  // The length of the part of edge x inside the ball of radius r around c: lengths of
+  // curves within a ball, the same on a mesh and on its flat subdivision.
+  auto length_inside = [&](std::size_t x, const Eigen::Vector3d& c) {
+    const Eigen::Vector3d d = end1[x] - end0[x], m = end0[x] - c;
+    const double a = d.squaredNorm(), b = m.dot(d), k = m.squaredNorm() - r * r;
+    const double disc = b * b - a * k;
+    if(a == 0 || disc <= 0) return 0.;
+    const double root = std::sqrt(disc);
+    const double t0 = (std::max)(0., (-b - root) / a), t1 = (std::min)(1., (-b + root) / a);
+    return t1 > t0 ? (t1 - t0) * std::sqrt(a) : 0.;
+  };
   std::vector<std::array<std::size_t, 3> > adj(nf), adj_edge(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
@@ -274,15 +284,16 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
       if(++k == 3) break;
     }
   }
-  // a search over the faces from the candidate's two faces, within the ball
-  // (the lengths are read from `angle`, not from is_crease, so dropping a candidate
-  // does not change the test of the others)
+  // a search over the faces from the candidate's two faces, across the edges that enter
+  // the ball (the lengths are read from `angle`, not from is_crease, so dropping a
+  // candidate does not change the test of the others)
   std::vector<std::size_t> face_stamp(nf, std::size_t(-1)), edge_stamp(ne, std::size_t(-1));
   std::vector<std::size_t> queue;
   queue.reserve(256);
   for(std::size_t e = 0; e < ne; ++e)
   {
     if(!is_crease[e]) continue;
+    const Eigen::Vector3d c = 0.5 * (end0[e] + end1[e]);
     const auto h = halfedge(idx.edge_at(e), tm);
     queue.clear();
     for(std::size_t f : { idx.face_id(h), idx.face_id(opposite(h, tm)) })
@@ -294,13 +305,14 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
       for(int k = 0; k < 3; ++k)
       {
         const std::size_t y = adj[x][k], ye = adj_edge[x][k];
-        if(edge_stamp[ye] != e)
-        {
-          edge_stamp[ye] = e;
-          if(angle[ye] >= crease_angle) crease_length += len[ye];
-          else if(band_angle[ye] >= crease_gap_band * crease_angle) band_length += len[ye];
-        }
-        if(y == idx.npos || face_stamp[y] == e || (centroid[y] - mid[e]).norm() > r) continue;
+        if(edge_stamp[ye] == e) continue; // seen from its other face
+        edge_stamp[ye] = e;
+        const bool crease = angle[ye] >= crease_angle, band = !crease && band_angle[ye] >= crease_gap_band * crease_angle;
+        const double inside = length_inside(ye, c);
+        if(inside <= 0) continue;
+        if(crease) crease_length += inside;
+        else if(band) band_length += inside;
+        if(y == idx.npos || face_stamp[y] == e) continue;
         face_stamp[y] = e;
         queue.push_back(y);
       }
@@ -343,7 +355,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
             : raw;
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
-  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, centroid, is_crease);
+  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
   return is_crease;
 }
