@@ -354,8 +354,10 @@ face_patches(), follow the rows of `faces`.)doc")
     .def_property_readonly("alpha", &Session::alpha, "the global alpha")
     .def_property_readonly("edits", &Session::edits, "the edits so far, as edit-script lines")
     .def("result", &Session::result, "what the segmentation measured (Result)")
-    .def("face_patches", &Session::face_patches, "patch of every face (int64 array, the rows of `faces`)")
-    .def("vertex_patches", &Session::vertex_patches, "patch of every vertex (int64 array; -1: unused vertex)")
+    .def("face_patches", &Session::face_patches,
+         "patch of every face under the smoothed boundaries, as face_patches.txt (int64 array, the rows of `faces`)")
+    .def("vertex_patches", &Session::vertex_patches,
+         "patch of every vertex after the smoothing, as vertex_patches.txt (int64 array; -1: unused vertex)")
     .def("set_alpha", [](Session& s, double a) { Script_edit e; e.verb = "alpha"; e.value = a; return s.edit(e); },
          py::arg("alpha"), "global refine (larger) or coarsen; returns the number of patches")
     .def("refine", [](Session& s, const py::handle& f, double d) { return s.edit(region_edit("refine", f, d)); },

@@ -685,8 +685,10 @@ private:
     if(opt.crease_angle >= 180) return w;
     check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
     auto idx = std::make_unique<internal::Mesh_indexing<TriangleMesh> >(tm);
+    typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
+      get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
     internal::compute_crease_cut(*idx, vpm, opt.crease_angle, opt.crease_filter_iterations, opt.tangent_discontinuities,
-                                 opt.gamma, w->cut);
+                                 opt.gamma, w->cut, std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value);
     if(w->cut.is_cut()) w->input_idx = std::move(idx);
     return w;
   }

@@ -13,6 +13,7 @@
 
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -128,8 +129,10 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
                                                         const std::vector<Eigen::Vector3d>& centroid,
                                                         const std::vector<std::size_t>& begin,
                                                         const std::vector<std::size_t>& ring,
-                                                        int max_iterations, double sigma_r, double stop_roughness)
+                                                        int max_iterations, double sigma_r, double stop_roughness,
+                                                        bool parallel = false)
 {
+  (void)parallel; // without TBB
   if(max_iterations <= 0 || initial_roughness <= stop_roughness) return normal;
   const std::size_t nf = normal.size();
   double sum = 0;
@@ -157,9 +160,10 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
   // at most stop_roughness, its output is dropped and its input returned, the result of
   // the same rounds as measuring after each round, without a second pass over the pairs.
   std::vector<double> least(stop_roughness > 0 ? nf : 0);
-  for(int it = 0; it < max_iterations; ++it)
-  {
-    for(std::size_t f = 0; f < nf; ++f)
+  // one round on the faces [first, last): each face reads the normals of the previous
+  // round only, so the faces of a round may be filtered by several threads
+  auto filter_range = [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
     {
       double closest = 4.;
       Eigen::Vector3d m = Eigen::Vector3d::Zero();
@@ -178,6 +182,16 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
       const double len = m.norm();
       next[f] = n[f].squaredNorm() > 0 && len > 0 && std::isfinite(len) ? Eigen::Vector3d(m / len) : n[f];
     }
+  };
+  for(int it = 0; it < max_iterations; ++it)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel)
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf, 1024),
+                        [&](const tbb::blocked_range<std::size_t>& b) { filter_range(b.begin(), b.end()); });
+    else
+#endif
+      filter_range(0, nf);
     if(it > 0 && !least.empty())
     {
       // the roughness of n, the output of round it - 1 (round 0 reads the input, whose
@@ -209,117 +223,12 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, cons
   return angle;
 }
 
-// The test that tells a crease from a strong bend of a smooth surface: within the ball
-// around a candidate edge's midpoint (radius crease_gap_radius of the diagonal, at least
-// two mean edge lengths), on the surface reached from the candidate, the edges bending
-// by [crease_gap_band * crease_angle, crease_angle)
-// may have at most crease_gap_ratio times the length of the candidates. A CAD
-// tessellation leaves a gap below its creases (on the 14 parts of the evaluation, no
-// edge between 15 and 30 degrees apart from the creases); a coarse or scanned smooth
-// surface bends by every angle, so its strong bends come with as many slightly weaker
-// ones around them.
-constexpr double crease_gap_band = 0.75;
-constexpr double crease_gap_ratio = 0.5;
-constexpr double crease_gap_radius = 0.05;
-// The raw roughness (normal_roughness) up to which the band is read on the raw angles:
-// clean CAD parts measure at most 0.0085 and the paper's smooth models 0.012 to 0.028,
-// whose filtered normals turn smooth bends into staircases with gaps; noisy meshes
-// (0.035 and more at 0.1% of the diagonal) are read on the filtered angles.
-constexpr double crease_gap_raw_roughness = 0.03;
-
 // The most rounds of filtering a smooth model gets (raw roughness between
 // crease_filter_roughness and crease_gap_raw_roughness). Its roughness is mostly the
 // curvature of the surface, which the filter barely lowers (rockerarm took 32 rounds to
 // reach 0.01, pulley never did in 40); 3 rounds already give the patch counts of 40 on
 // the paper's models, and 10 leave a margin for noisier scans.
 constexpr int crease_smooth_filter_iterations = 10;
-
-// Drops the candidates (is_crease, from `angle`) that fail the gap test; `raw` are the
-// dihedral angles of the unfiltered normals, `raw_roughness` their roughness.
-template <typename TriangleMesh, typename VPM>
-void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
-                           const std::vector<double>& raw, double raw_roughness, double crease_angle,
-                           std::vector<char>& is_crease)
-{
-  const TriangleMesh& tm = idx.mesh();
-  const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
-  if(ne == 0) return;
-  const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
-  std::vector<Eigen::Vector3d> end0(ne), end1(ne);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-  double mean_edge = 0;
-  for(std::size_t e = 0; e < ne; ++e)
-  {
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const auto& p = get(vpm, source(h, tm));
-    const auto& q = get(vpm, target(h, tm));
-    end0[e] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    end1[e] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    lo = lo.cwiseMin(end0[e]).cwiseMin(end1[e]);
-    hi = hi.cwiseMax(end0[e]).cwiseMax(end1[e]);
-    mean_edge += (end1[e] - end0[e]).norm();
-  }
-  mean_edge /= double(ne);
-  // on a coarse mesh the ball must still reach the candidate's neighbours
-  const double r = (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
-  // The length of the part of edge x inside the ball of radius r around c: lengths of
-  // curves within a ball, the same on a mesh and on its flat subdivision.
-  auto length_inside = [&](std::size_t x, const Eigen::Vector3d& c) {
-    const Eigen::Vector3d d = end1[x] - end0[x], m = end0[x] - c;
-    const double a = d.squaredNorm(), b = m.dot(d), k = m.squaredNorm() - r * r;
-    const double disc = b * b - a * k;
-    if(a == 0 || disc <= 0) return 0.;
-    const double root = std::sqrt(disc);
-    const double t0 = (std::max)(0., (-b - root) / a), t1 = (std::min)(1., (-b + root) / a);
-    return t1 > t0 ? (t1 - t0) * std::sqrt(a) : 0.;
-  };
-  std::vector<std::array<std::size_t, 3> > adj(nf), adj_edge(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-    {
-      adj[f][k] = idx.face_id(opposite(h, tm));
-      adj_edge[f][k] = idx.edge_id(h);
-      if(++k == 3) break;
-    }
-  }
-  // a search over the faces from the candidate's two faces, across the edges that enter
-  // the ball (the lengths are read from `angle`, not from is_crease, so dropping a
-  // candidate does not change the test of the others)
-  std::vector<std::size_t> face_stamp(nf, std::size_t(-1)), edge_stamp(ne, std::size_t(-1));
-  std::vector<std::size_t> queue;
-  queue.reserve(256);
-  for(std::size_t e = 0; e < ne; ++e)
-  {
-    if(!is_crease[e]) continue;
-    const Eigen::Vector3d c = 0.5 * (end0[e] + end1[e]);
-    const auto h = halfedge(idx.edge_at(e), tm);
-    queue.clear();
-    for(std::size_t f : { idx.face_id(h), idx.face_id(opposite(h, tm)) })
-      if(f != idx.npos && face_stamp[f] != e) { face_stamp[f] = e; queue.push_back(f); }
-    double band_length = 0, crease_length = 0;
-    for(std::size_t i = 0; i < queue.size(); ++i)
-    {
-      const std::size_t x = queue[i];
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::size_t y = adj[x][k], ye = adj_edge[x][k];
-        if(edge_stamp[ye] == e) continue; // seen from its other face
-        edge_stamp[ye] = e;
-        const bool crease = angle[ye] >= crease_angle, band = !crease && band_angle[ye] >= crease_gap_band * crease_angle;
-        const double inside = length_inside(ye, c);
-        if(inside <= 0) continue;
-        if(crease) crease_length += inside;
-        else if(band) band_length += inside;
-        if(y == idx.npos || face_stamp[y] == e) continue;
-        face_stamp[y] = e;
-        queue.push_back(y);
-      }
-    }
-    if(band_length > crease_gap_ratio * crease_length) is_crease[e] = 0;
-  }
-}
 
 // The creases of the mesh of `idx` (per edge): the edges whose dihedral angle is at
 // least crease_angle on the face normals after at most `filter_iterations` rounds of
@@ -331,7 +240,8 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
 // filtered angles, `clean` whether the tessellation is clean.
 template <typename TriangleMesh, typename VPM>
 std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle,
-                                 int filter_iterations, bool tangent, std::vector<double>& angle, bool& clean)
+                                 int filter_iterations, bool tangent, std::vector<double>& angle, bool& clean,
+                                 bool parallel = false)
 {
   std::vector<Eigen::Vector3d> normal, centroid;
   std::vector<double> area;
@@ -351,11 +261,11 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
             ? dihedral_angles(idx, filter_face_normals(normal, raw_roughness, area, centroid, begin, ring,
                                                        stop > 0 ? (std::min)(filter_iterations, crease_smooth_filter_iterations)
                                                                 : filter_iterations,
-                                                       crease_filter_sigma_r, stop))
+                                                       crease_filter_sigma_r, stop, parallel))
             : raw;
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
-  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease);
+  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
   return is_crease;
 }
@@ -410,7 +320,7 @@ struct Crease_cut
 // elements in the same iteration order).
 template <typename TriangleMesh, typename VPM>
 void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, int filter_iterations,
-                        bool tangent, double gamma, Crease_cut<TriangleMesh>& cut)
+                        bool tangent, double gamma, Crease_cut<TriangleMesh>& cut, bool parallel = false)
 {
   typedef boost::graph_traits<TriangleMesh> GTr;
   typedef typename GTr::vertex_descriptor vertex_descriptor;
@@ -423,7 +333,7 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   cut.is_crease.assign(ne, 0);
   if(crease_angle >= 180) return;
   std::vector<double> angle;
-  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, tangent, angle, cut.clean);
+  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, tangent, angle, cut.clean, parallel);
   cut.number_of_creases = ne - std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 0));
   if(cut.number_of_creases == 0) return;
 
