@@ -13,6 +13,7 @@
 
 #include <CGAL/Feature_segmentation/crest_lines.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
+#include <CGAL/Feature_segmentation/smooth_boundaries.h>
 #include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
 
 #include <boost/program_options/options_description.hpp>
@@ -39,9 +40,8 @@ namespace FS = CGAL::Feature_segmentation;
 
 inline const char* const program_name = "feature_segmentation";
 
-// smooth_patch_boundaries()'s default number of iterations, for --help and the summary
-// (the program passes the option to the library only when it is given).
-inline const int default_smoothing_iterations = 20;
+// for --help and the summary (the program passes the option only when it is given)
+inline const int default_smoothing_iterations = FS::default_smoothing_iterations;
 
 // A wrong command line: reported with exit status 2, as getopt-style programs do.
 class Usage_error : public std::runtime_error
@@ -78,8 +78,8 @@ struct Options
   bool valleys = true;
   std::string feature_edges_file;           // empty: none
   // The library's defaults for alpha and gamma (segment_along_features()).
-  double alpha = 0.6;
-  double gamma = 0.05;
+  double alpha = CGAL::Feature_segmentation::internal::Segmentation_options().alpha;
+  double gamma = CGAL::Feature_segmentation::internal::Segmentation_options().gamma;
   double crease_angle = CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle;
   // most rounds of normal filtering before creases: the library's default
   int crease_filter = CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations;
@@ -173,8 +173,9 @@ inline void print_usage(std::ostream& os)
      << "  --feature-edges FILE      add user feature lines: a CGAL polylines file whose\n"
      << "                            points are mesh vertices and segments mesh edges\n"
      << "  --alpha X                 weight of the feature lines, any finite number; larger\n"
-     << "                            gives more patches, useful range 0.5 to 1 (default: 0.6)\n"
-     << "  --gamma X                 anisotropy of the metric, X >= 0 (default: 0.05)\n"
+     << "                            gives more patches, useful range 0.5 to 1 (default: "
+     << Options().alpha << ")\n"
+     << "  --gamma X                 anisotropy of the metric, X >= 0 (default: " << Options().gamma << ")\n"
      << "  --crease-angle D          edges whose faces bend by D degrees or more are creases:\n"
      << "                            the mesh is cut open along them and their sides tied by\n"
      << "                            crease weights (a gap test keeps strong bends of smooth\n"

@@ -95,7 +95,7 @@ public:
                                         const NamedParameters& np = CGAL::parameters::default_values())
     : m_opt(internal::read_segmentation_options<TriangleMesh>(np)),
       m_work(make_working(tm, np, m_opt)),
-      m_data(m_work->cut.is_cut() ? *m_work->cut.mesh : tm)
+      m_data(m_work->cut.is_cut() ? *m_work->cut.working_idx : *m_work->input_idx)
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
@@ -468,7 +468,7 @@ private:
   };
   struct State
   {
-    double alpha = 0.6;
+    double alpha = internal::Segmentation_options().alpha;
     std::vector<double> alpha_e;
     std::vector<std::size_t> group;  // merge constraints: oversegments of a group stay together
     std::vector<std::size_t> labels; // per vertex
@@ -666,10 +666,12 @@ private:
   }
 
   // The input's indexing and crease cut; shared by copies (never changed after
-  // construction), so the working mesh that m_data refers to stays where it is.
+  // construction), so the working mesh that m_data refers to stays where it is. The
+  // input is checked and indexed once, here; the working mesh, made from it, is indexed
+  // once by the cut; m_data copies the indexing of the mesh it works on.
   struct Working
   {
-    std::unique_ptr<internal::Mesh_indexing<TriangleMesh> > input_idx; // only when cut
+    std::unique_ptr<internal::Mesh_indexing<TriangleMesh> > input_idx;
     internal::Crease_cut<TriangleMesh> cut;
   };
 
@@ -682,14 +684,14 @@ private:
     auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                 get_const_property_map(CGAL::vertex_point, tm));
     auto w = std::make_shared<Working>();
-    if(opt.crease_angle >= 180) return w;
     check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
-    auto idx = std::make_unique<internal::Mesh_indexing<TriangleMesh> >(tm);
+    w->input_idx = std::make_unique<internal::Mesh_indexing<TriangleMesh> >(tm);
+    if(opt.crease_angle >= 180) return w;
     typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
       get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
-    internal::compute_crease_cut(*idx, vpm, opt.crease_angle, opt.crease_filter_iterations, opt.tangent_discontinuities,
-                                 opt.gamma, w->cut, std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value);
-    if(w->cut.is_cut()) w->input_idx = std::move(idx);
+    internal::compute_crease_cut(*w->input_idx, vpm, opt.crease_angle, opt.crease_filter_iterations,
+                                 opt.tangent_discontinuities, opt.gamma, w->cut,
+                                 std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value);
     return w;
   }
 
@@ -737,7 +739,7 @@ private:
     using CGAL::parameters::is_default_parameter;
     if(!m_work->cut.is_cut())
     {
-      internal::prepare_segmentation_data(tm, np, m_opt, m_data, m_lines);
+      internal::prepare_segmentation_data(tm, np, m_opt, m_data, m_lines, false); // checked by make_working
       m_state.alpha_e = internal::edge_alphas(m_data, m_opt, np);
       m_first_tie = m_data.edge_vertices.size();
       count_feature_edges();
@@ -758,7 +760,7 @@ private:
     auto with_lines = [&](const auto& np3) {
       typedef std::decay_t<decltype(np3)> NP3;
       if constexpr(is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value)
-        internal::prepare_segmentation_data(wm, np3, opt, m_data, m_lines);
+        internal::prepare_segmentation_data(wm, np3, opt, m_data, m_lines, false); // made from the checked input
       else
       {
         Feature_lines<TriangleMesh> lines = get_parameter_reference(np, internal_np::feature_lines);
@@ -766,7 +768,7 @@ private:
           for(auto& p : l.points)
             p.halfedge = working_halfedge_at(cut.working_halfedge[in.halfedge_id(p.halfedge)]);
         const Named_function_parameters<Feature_lines<TriangleMesh>, internal_np::feature_lines_t, NP3> np4(lines, np3);
-        internal::prepare_segmentation_data(wm, np4, opt, m_data, m_lines);
+        internal::prepare_segmentation_data(wm, np4, opt, m_data, m_lines, false);
       }
     };
     auto with_features = [&](const auto& np2) {

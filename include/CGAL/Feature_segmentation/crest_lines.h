@@ -35,6 +35,66 @@ namespace Feature_segmentation {
 /// spurious short lines of near-umbilic or noisy regions stay well below it.
 constexpr double default_strength_threshold = 1.0;
 
+namespace internal {
+
+// The options of the crest lines, checked.
+template <typename NamedParameters>
+Crest_options read_crest_options(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Crest_options opt;
+  opt.strength_threshold = choose_parameter(get_parameter(np, internal_np::strength_threshold),
+                                            default_strength_threshold);
+  opt.umbilic_ratio = choose_parameter(get_parameter(np, internal_np::umbilic_ratio), 0.1);
+  opt.ridges = choose_parameter(get_parameter(np, internal_np::detect_ridges), true);
+  opt.valleys = choose_parameter(get_parameter(np, internal_np::detect_valleys), true);
+  if(!(opt.strength_threshold >= 0) || !std::isfinite(opt.strength_threshold))
+    throw Invalid_input("strength_threshold must be a finite number >= 0 (got " +
+                        std::to_string(opt.strength_threshold) + ")");
+  if(!(opt.umbilic_ratio >= 0 && opt.umbilic_ratio < 1))
+    throw Invalid_input("umbilic_ratio must be in [0, 1) (got " + std::to_string(opt.umbilic_ratio) + ")");
+
+  return opt;
+}
+
+// detect_crest_lines() on a mesh already checked (check_input_mesh()) and indexed: what
+// the segmentation's precomputation calls, so that the mesh is checked and indexed once.
+template <typename TriangleMesh, typename VPM, typename VertexCurvatureMap>
+Feature_lines<TriangleMesh> detect_crest_lines(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
+                                               VertexCurvatureMap curvature_map, const Crest_options& opt)
+{
+  std::vector<Eigen::Vector3d> points(idx.number_of_vertices());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const auto& p = get(vpm, idx.vertex_at(i));
+    points[i] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  Crest_line_detector<TriangleMesh> detector(idx, points);
+  Feature_lines<TriangleMesh> result;
+  std::vector<Crest_vertex_data> data(points.size());
+  for(Feature_line_type type : {Feature_line_type::RIDGE, Feature_line_type::VALLEY})
+  {
+    if((type == Feature_line_type::RIDGE && !opt.ridges) || (type == Feature_line_type::VALLEY && !opt.valleys))
+      continue;
+    const bool ridge = (type == Feature_line_type::RIDGE);
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const auto c = get(curvature_map, idx.vertex_at(i));
+      const auto& d = ridge ? c.d_max() : c.d_min();
+      data[i].k = CGAL::to_double(ridge ? c.k_max() : c.k_min());
+      data[i].k_other = CGAL::to_double(ridge ? c.k_min() : c.k_max());
+      data[i].e = CGAL::to_double(ridge ? c.e_max() : c.e_min());
+      data[i].t = Eigen::Vector3d(CGAL::to_double(d.x()), CGAL::to_double(d.y()), CGAL::to_double(d.z()));
+    }
+    detector.detect(type, data, opt, result);
+  }
+  detector.sort_lines(result);
+  return result;
+}
+
+} // namespace internal
+
 /// \ingroup PkgFeatureSegmentationFeatureLines
 /// Detects ridges and valleys from a vertex curvature map.
 ///
@@ -72,48 +132,10 @@ detect_crest_lines(const TriangleMesh& tm, VertexCurvatureMap curvature_map,
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
-  internal::Crest_options opt;
-  opt.strength_threshold = choose_parameter(get_parameter(np, internal_np::strength_threshold),
-                                            default_strength_threshold);
-  opt.umbilic_ratio = choose_parameter(get_parameter(np, internal_np::umbilic_ratio), 0.1);
-  opt.ridges = choose_parameter(get_parameter(np, internal_np::detect_ridges), true);
-  opt.valleys = choose_parameter(get_parameter(np, internal_np::detect_valleys), true);
-  if(!(opt.strength_threshold >= 0) || !std::isfinite(opt.strength_threshold))
-    throw Invalid_input("strength_threshold must be a finite number >= 0 (got " +
-                        std::to_string(opt.strength_threshold) + ")");
-  if(!(opt.umbilic_ratio >= 0 && opt.umbilic_ratio < 1))
-    throw Invalid_input("umbilic_ratio must be in [0, 1) (got " + std::to_string(opt.umbilic_ratio) + ")");
-
+  const internal::Crest_options opt = internal::read_crest_options(np); // the options' errors first
   check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
-
-  internal::Mesh_indexing<TriangleMesh> idx(tm);
-  std::vector<Eigen::Vector3d> points(idx.number_of_vertices());
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    const auto& p = get(vpm, idx.vertex_at(i));
-    points[i] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
-  internal::Crest_line_detector<TriangleMesh> detector(idx, points);
-  Feature_lines<TriangleMesh> result;
-  std::vector<internal::Crest_vertex_data> data(points.size());
-  for(Feature_line_type type : {Feature_line_type::RIDGE, Feature_line_type::VALLEY})
-  {
-    if((type == Feature_line_type::RIDGE && !opt.ridges) || (type == Feature_line_type::VALLEY && !opt.valleys))
-      continue;
-    const bool ridge = (type == Feature_line_type::RIDGE);
-    for(std::size_t i = 0; i < points.size(); ++i)
-    {
-      const auto c = get(curvature_map, idx.vertex_at(i));
-      const auto& d = ridge ? c.d_max() : c.d_min();
-      data[i].k = CGAL::to_double(ridge ? c.k_max() : c.k_min());
-      data[i].k_other = CGAL::to_double(ridge ? c.k_min() : c.k_max());
-      data[i].e = CGAL::to_double(ridge ? c.e_max() : c.e_min());
-      data[i].t = Eigen::Vector3d(CGAL::to_double(d.x()), CGAL::to_double(d.y()), CGAL::to_double(d.z()));
-    }
-    detector.detect(type, data, opt, result);
-  }
-  detector.sort_lines(result);
-  return result;
+  const internal::Mesh_indexing<TriangleMesh> idx(tm);
+  return internal::detect_crest_lines(idx, vpm, curvature_map, opt);
 }
 
 /// \ingroup PkgFeatureSegmentationFeatureLines

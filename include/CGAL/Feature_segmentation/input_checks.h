@@ -10,6 +10,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Feature_segmentation/parameters.h>
+#include <CGAL/Feature_segmentation/internal/mesh_pass_counts.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -65,6 +66,7 @@ Mesh_check_report check_input_mesh(const TriangleMesh& tm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  CGAL_FEATURE_SEGMENTATION_COUNT_PASS(checks);
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
 

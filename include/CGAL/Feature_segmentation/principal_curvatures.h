@@ -70,6 +70,59 @@ struct Principal_curvatures
 /// patches at 13k, 207k and 828k faces (25 to 29 at 828k with rings only).
 constexpr double default_neighborhood_radius = 0.01;
 
+namespace internal {
+
+// The options of the curvature fit, checked.
+struct Curvature_settings
+{
+  unsigned int rings = 2;
+  double radius = default_neighborhood_radius; // a fraction of the diagonal
+};
+
+template <typename NamedParameters>
+Curvature_settings read_curvature_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const int rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 2);
+  if(rings < 1)
+    throw Invalid_input("neighborhood_rings must be at least 1 (got " + std::to_string(rings) + ")");
+  const double radius = choose_parameter(get_parameter(np, internal_np::neighborhood_radius),
+                                         default_neighborhood_radius);
+  if(!(radius >= 0) || !(radius <= 1))
+    throw Invalid_input("neighborhood_radius must be a number in [0, 1] (a fraction of the bounding box "
+                        "diagonal; got " + std::to_string(radius) + ")");
+  return { static_cast<unsigned int>(rings), radius };
+}
+
+// estimate_principal_curvatures() on a mesh already checked (check_input_mesh()) and
+// indexed: what the segmentation's precomputation calls, so that the mesh is checked and
+// indexed once.
+template <typename TriangleMesh, typename VertexCurvatureMap, typename NamedParameters>
+void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, VertexCurvatureMap curvature_map,
+                                   const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  const TriangleMesh& tm = idx.mesh();
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_const_property_map(CGAL::vertex_point, tm));
+  const Curvature_settings settings = read_curvature_settings(np);
+  typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
+    get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
+  constexpr bool parallel = std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value;
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!parallel, "concurrency_tag(CGAL::Parallel_tag()) needs TBB (CGAL_LINKED_WITH_TBB)");
+#endif
+  Curvature_fitting<TriangleMesh, VPM, GT> fitting(idx, vpm);
+  fitting.estimate(settings.rings, settings.radius * fitting.geometry().bounding_box_diagonal(), parallel);
+  fitting.write(curvature_map);
+}
+
+} // namespace internal
+
 /// \ingroup PkgFeatureSegmentationCurvature
 /// Estimates, at every vertex of `tm`, the principal curvatures, their directions and
 /// their derivatives along their directions, and writes them into `curvature_map`.
@@ -119,33 +172,14 @@ void estimate_principal_curvatures(const TriangleMesh& tm,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
 
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
-  const int rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 2);
-  if(rings < 1)
-    throw Invalid_input("neighborhood_rings must be at least 1 (got " + std::to_string(rings) + ")");
-  const double radius = choose_parameter(get_parameter(np, internal_np::neighborhood_radius),
-                                         default_neighborhood_radius);
-  if(!(radius >= 0) || !(radius <= 1))
-    throw Invalid_input("neighborhood_radius must be a number in [0, 1] (a fraction of the bounding box "
-                        "diagonal; got " + std::to_string(radius) + ")");
-
+  internal::read_curvature_settings(np); // the options' errors before the mesh's
   check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
-
-  typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
-    get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
-  constexpr bool parallel = std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value;
-#ifndef CGAL_LINKED_WITH_TBB
-  static_assert(!parallel, "concurrency_tag(CGAL::Parallel_tag()) needs TBB (CGAL_LINKED_WITH_TBB)");
-#endif
-
-  internal::Curvature_fitting<TriangleMesh, VPM, GT> fitting(tm, vpm);
-  fitting.estimate(static_cast<unsigned int>(rings), radius * fitting.geometry().bounding_box_diagonal(),
-                   parallel);
-  fitting.write(curvature_map);
+  const internal::Mesh_indexing<TriangleMesh> idx(tm);
+  internal::estimate_principal_curvatures(idx, curvature_map, np);
 }
 
 } // namespace Feature_segmentation

@@ -24,6 +24,10 @@ namespace CGAL {
 namespace Feature_segmentation {
 
 /// \ingroup PkgFeatureSegmentationBoundaries
+/// The default number of iterations of `smooth_patch_boundaries()`.
+constexpr int default_smoothing_iterations = 20;
+
+/// \ingroup PkgFeatureSegmentationBoundaries
 /// What `smooth_patch_boundaries()` did.
 struct Boundary_smoothing_report
 {
@@ -105,7 +109,8 @@ Boundary_smoothing_report smooth_patch_boundaries(Patch_boundaries<TriangleMesh>
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto iterations = choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 20);
+  const auto iterations =
+    choose_parameter(get_parameter(np, internal_np::smoothing_iterations), default_smoothing_iterations);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-4);
   bool negative = false;
   if constexpr(std::is_signed<std::decay_t<decltype(iterations)> >::value) negative = iterations < 0;

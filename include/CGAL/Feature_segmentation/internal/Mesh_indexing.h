@@ -6,6 +6,8 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_MESH_INDEXING_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_MESH_INDEXING_H
 
+#include <CGAL/Feature_segmentation/internal/mesh_pass_counts.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -40,6 +42,7 @@ public:
       m_himap(get(CGAL::dynamic_halfedge_property_t<std::size_t>(), tm)),
       m_fimap(get(CGAL::dynamic_face_property_t<std::size_t>(), tm))
   {
+    CGAL_FEATURE_SEGMENTATION_COUNT_PASS(indexings);
     for(vertex_descriptor v : vertices(tm)) { put(m_vimap, v, m_vertices.size()); m_vertices.push_back(v); }
     for(face_descriptor f : faces(tm)) { put(m_fimap, f, m_faces.size()); m_faces.push_back(f); }
     // Edge i owns halfedges 2i and 2i+1 in this numbering (whatever the mesh's own).

@@ -75,6 +75,8 @@ public:
   typedef Eigen::Vector3d Vec3;
 
   explicit Segmentation_data(const TriangleMesh& tm) : idx(tm) {}
+  // on an indexing already made (a copy shares its index maps)
+  explicit Segmentation_data(const Indexing& indexing) : idx(indexing) {}
 
   // Positions and curvatures, read through the user's maps once.
   template <typename VPM, typename CurvatureMap>

@@ -302,6 +302,8 @@ template <typename TriangleMesh>
 struct Crease_cut
 {
   std::unique_ptr<TriangleMesh> mesh;             // the working mesh (null: no crease)
+  // its indexing, the one every stage uses (declared after `mesh`, destroyed before it)
+  std::unique_ptr<const Mesh_indexing<TriangleMesh> > working_idx;
   std::vector<char> is_crease;                    // per input edge
   std::size_t number_of_creases = 0;
   bool clean = false;                             // a clean tessellation (normal roughness at most 0.01)
@@ -418,9 +420,10 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   }
   CGAL_postcondition(CGAL::is_valid_polygon_mesh(wm));
 
-  // Halfedge and edge maps, through a temporary indexing of the working mesh. Every
-  // working edge has a face, hence an input halfedge mapped to it.
-  const Mesh_indexing<TriangleMesh> widx(wm);
+  // Halfedge and edge maps, through the indexing of the working mesh (kept for the
+  // stages). Every working edge has a face, hence an input halfedge mapped to it.
+  cut.working_idx = std::make_unique<const Mesh_indexing<TriangleMesh> >(wm);
+  const Mesh_indexing<TriangleMesh>& widx = *cut.working_idx;
   CGAL_postcondition(widx.number_of_faces() == nf);
   cut.working_halfedge.assign(2 * ne, std::size_t(-1));
   cut.input_edge.assign(widx.number_of_edges(), std::size_t(-1));

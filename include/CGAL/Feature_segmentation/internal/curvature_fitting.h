@@ -144,8 +144,9 @@ class Curvature_fitting
 public:
   typedef Mesh_indexing<TriangleMesh> Indexing;
 
-  Curvature_fitting(const TriangleMesh& tm, VPM vpm)
-    : m_idx(tm), m_geom(m_idx, vpm)
+  // `idx`: an indexing of the mesh, which must outlive the object
+  Curvature_fitting(const Indexing& idx, VPM vpm)
+    : m_idx(idx), m_geom(m_idx, vpm)
   {}
 
   // The neighbourhood of a vertex: its `rings` rings, extended through the edges to
@@ -392,7 +393,7 @@ private:
     }
   }
 
-  Indexing m_idx;
+  const Indexing& m_idx;
   Mesh_geometry<TriangleMesh, VPM> m_geom;
   std::vector<Vertex_curvature> m_curv;
   std::vector<std::size_t> m_adj_begin, m_adj;

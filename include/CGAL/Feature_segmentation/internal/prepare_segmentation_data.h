@@ -39,11 +39,13 @@ Segmentation_options read_segmentation_options(const NamedParameters& np)
 
 // Fills `data` (constructed on `tm`) from the named parameters; `lines_out` receives the
 // feature lines used (detected or the user's), empty when only an edge map was given.
+// The curvature fit and the crest lines work on data.idx, the one indexing of `tm`;
+// `check_mesh` false: the caller has checked `tm` (or built it from a checked mesh).
 template <typename TriangleMesh, typename NamedParameters>
 void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np,
                                const Segmentation_options& opt,
                                Segmentation_data<TriangleMesh>& data,
-                               Feature_lines<TriangleMesh>& lines_out)
+                               Feature_lines<TriangleMesh>& lines_out, bool check_mesh = true)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -54,7 +56,8 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
 
-  check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
+  CGAL_precondition(&data.idx.mesh() == &tm);
+  if(check_mesh) check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
 
   auto own_curvature = get(CGAL::dynamic_vertex_property_t<Principal_curvatures<GT> >(), tm);
   auto own_features = get(CGAL::dynamic_edge_property_t<bool>(), tm);
@@ -80,7 +83,7 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
     }
     else
     {
-      if(opt.detect_crest_lines) lines_out = detect_crest_lines(tm, cmap, np);
+      if(opt.detect_crest_lines) lines_out = detect_crest_lines(data.idx, vpm, cmap, read_crest_options(np));
       else lines_out.lines.clear();
       mark_feature_edges(tm, lines_out, own_features);
       data.set_features(own_features, lines_out);
@@ -89,7 +92,7 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
 
   if constexpr(is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
   {
-    estimate_principal_curvatures(tm, own_curvature, np);
+    estimate_principal_curvatures(data.idx, own_curvature, np);
     with_curvature(own_curvature);
   }
   else
