@@ -681,8 +681,7 @@ private:
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
-    auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                get_const_property_map(CGAL::vertex_point, tm));
+    auto vpm = internal::vertex_point_map(tm, np);
     auto w = std::make_shared<Working>();
     check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
     w->input_idx = std::make_unique<internal::Mesh_indexing<TriangleMesh> >(tm);

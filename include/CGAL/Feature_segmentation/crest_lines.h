@@ -130,8 +130,7 @@ detect_crest_lines(const TriangleMesh& tm, VertexCurvatureMap curvature_map,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = internal::vertex_point_map(tm, np);
   const internal::Crest_options opt = internal::read_crest_options(np); // the options' errors first
   check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
   const internal::Mesh_indexing<TriangleMesh> idx(tm);

@@ -67,8 +67,7 @@ Mesh_check_report check_input_mesh(const TriangleMesh& tm,
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   CGAL_FEATURE_SEGMENTATION_COUNT_PASS(checks);
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = internal::vertex_point_map(tm, np);
 
   Mesh_check_report report;
   if(faces(tm).empty())

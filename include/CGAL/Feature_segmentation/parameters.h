@@ -13,6 +13,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 namespace CGAL {
 namespace Feature_segmentation {
@@ -96,6 +97,19 @@ using CGAL::parameters::is_default_parameter;
 #endif
 
 } // namespace parameters
+
+namespace internal {
+
+// The vertex point map of the named parameters (`vertex_point_map`), or the mesh's own.
+template <typename TriangleMesh, typename NamedParameters>
+typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type
+vertex_point_map(const TriangleMesh& tm, const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                            get_const_property_map(CGAL::vertex_point, tm));
+}
+
+} // namespace internal
 } // namespace Feature_segmentation
 } // namespace CGAL
 

@@ -107,8 +107,7 @@ void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, Verte
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   const TriangleMesh& tm = idx.mesh();
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = internal::vertex_point_map(tm, np);
   const Curvature_settings settings = read_curvature_settings(np);
   typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
     get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
@@ -174,8 +173,7 @@ void estimate_principal_curvatures(const TriangleMesh& tm,
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
 
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = internal::vertex_point_map(tm, np);
   internal::read_curvature_settings(np); // the options' errors before the mesh's
   check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
   const internal::Mesh_indexing<TriangleMesh> idx(tm);

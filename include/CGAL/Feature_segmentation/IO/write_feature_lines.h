@@ -89,8 +89,7 @@ bool write_polylines(std::ostream& os, const TriangleMesh& tm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = internal::vertex_point_map(tm, np);
 
   internal::Full_precision_guard guard(os);
   for(const Feature_line<TriangleMesh>& line : lines.lines)
@@ -134,8 +133,7 @@ bool write_OBJ_lines(std::ostream& os, const TriangleMesh& tm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = internal::vertex_point_map(tm, np);
 
   internal::Full_precision_guard guard(os);
   os << "# feature lines: " << lines.lines.size() << '\n';

@@ -101,8 +101,7 @@ bool write_PLY_segmentation(std::ostream& os, const TriangleMesh& tm,
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = internal::vertex_point_map(tm, np);
   // A face refers to its vertices by their position in `vertices(tm)`, whatever the
   // mesh's own indices (which a mesh with removed elements does not keep contiguous).
   auto vim = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);

@@ -53,8 +53,7 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
   using CGAL::parameters::is_default_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                             get_const_property_map(CGAL::vertex_point, tm));
+  VPM vpm = vertex_point_map(tm, np);
 
   CGAL_precondition(&data.idx.mesh() == &tm);
   if(check_mesh) check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
