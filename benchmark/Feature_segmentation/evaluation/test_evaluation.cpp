@@ -9,6 +9,7 @@
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
 
 #include "abc_ground_truth.h"
+#include "cad_parts.h"
 #include "methods.h"
 #include "metrics.h"
 #include "test_meshes.h"
@@ -141,6 +142,40 @@ void check_abc_error(const std::string& text, const std::string& reason)
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(evaluation)
+
+// The boundaries of two meshes of one surface, compared as 3D segments (the resolution
+// series' compare_boundaries_across_meshes()), tolerance 0.01: the border of a unit
+// square against the same border cut into 1,000 edges (a finer mesh) matches exactly;
+// against the border moved by 0.02, nothing; two of its sides against the whole border:
+// precision 1, recall 0.505 (the two sides, and on each of the other two the pieces of
+// 0.005 whose midpoints, 0.0025 and 0.0075 from a shared corner, lie within 0.01).
+BOOST_AUTO_TEST_CASE(boundaries_across_meshes_by_hand)
+{
+  typedef fs_evaluation::Boundary_segment S;
+  typedef FS::internal::Evaluation_point P;
+  const P a(0, 0, 0), b(1, 0, 0), c(1, 1, 0), d(0, 1, 0);
+  const std::vector<S> square = { S(a, b), S(b, c), S(c, d), S(d, a) };
+  std::vector<S> fine, moved;
+  for(const S& side : square)
+  {
+    for(int i = 0; i < 250; ++i)
+      fine.emplace_back(side.source() + (side.target() - side.source()) * (i / 250.),
+                        side.source() + (side.target() - side.source()) * ((i + 1) / 250.));
+    const FS::internal::Evaluation_kernel::Vector_3 up(0, 0, 0.02);
+    moved.emplace_back(side.source() + up, side.target() + up);
+  }
+  const FS::Boundary_scores same = fs_evaluation::compare_boundaries_across_meshes(fine, square, 0.01);
+  BOOST_TEST(same.precision == 1.);
+  BOOST_TEST(same.recall == 1.);
+  BOOST_TEST(same.f_score == 1.);
+  const FS::Boundary_scores away = fs_evaluation::compare_boundaries_across_meshes(moved, square, 0.01);
+  BOOST_TEST(away.precision == 0.);
+  BOOST_TEST(away.recall == 0.);
+  const FS::Boundary_scores half =
+    fs_evaluation::compare_boundaries_across_meshes({ S(a, b), S(b, c) }, square, 0.01);
+  BOOST_TEST(half.precision == 1.);
+  BOOST_TEST(half.recall == 0.505, boost::test_tools::tolerance(1e-9));
+}
 
 BOOST_AUTO_TEST_CASE(rand_index_by_hand)
 {
