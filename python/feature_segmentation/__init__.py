@@ -36,4 +36,5 @@ def segment(vertices, faces, **options):
     (patches, cut_cost, faces, vertices, feature_edges, crease_edges, seconds per stage).
     """
     s = Segmentation(vertices, faces, **options)
-    return s.face_patches(), s.vertex_patches(), s.result()
+    face_patches, vertex_patches = s.patch_arrays()  # one smoothing for both
+    return face_patches, vertex_patches, s.result()

@@ -172,6 +172,12 @@ public:
   // vertex_patches.txt.
   py::array_t<std::int64_t> face_patches() const { return to_array(file_patches().faces); }
   py::array_t<std::int64_t> vertex_patches() const { return to_array(file_patches().vertices); }
+  // Both from one smoothing of the boundaries.
+  py::tuple patch_arrays() const
+  {
+    const Pipeline::File_patches p = file_patches();
+    return py::make_tuple(to_array(p.faces), to_array(p.vertices));
+  }
 
   Pipeline::File_patches file_patches() const
   {
@@ -358,6 +364,8 @@ face_patches(), follow the rows of `faces`.)doc")
          "patch of every face under the smoothed boundaries, as face_patches.txt (int64 array, the rows of `faces`)")
     .def("vertex_patches", &Session::vertex_patches,
          "patch of every vertex after the smoothing, as vertex_patches.txt (int64 array; -1: unused vertex)")
+    .def("patch_arrays", &Session::patch_arrays,
+         "(face_patches(), vertex_patches()) from one smoothing of the boundaries")
     .def("set_alpha", [](Session& s, double a) { Script_edit e; e.verb = "alpha"; e.value = a; return s.edit(e); },
          py::arg("alpha"), "global refine (larger) or coarsen; returns the number of patches")
     .def("refine", [](Session& s, const py::handle& f, double d) { return s.edit(region_edit("refine", f, d)); },
