@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The segmentation methods the quality evaluation compares, run on one mesh with shared
 // precomputation, and their scores with the metrics of metrics.h. Shared by the evaluation program (evaluate_quality) and by the ctest
-// floors (test_evaluation), so that both measure the same thing.
+// floors (test_evaluation_floors), so that both measure the same thing.
 //
 // Methods (face labels in the mesh's face order):
 // - this package's correlation clustering: on the full vertex graph, on the geodesic
