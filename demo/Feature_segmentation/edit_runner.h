@@ -119,8 +119,9 @@ public:
       if(last.recorded && !m_segmentation.undo())
         throw Edit_script_error(internal::script_place(script.path, e.line) +
                                 "undo: cannot take back line " + std::to_string(last.line) +
-                                ": the segmentation keeps the last " +
-                                std::to_string(Segmentation::maximum_undo_depth) + " edits only");
+                                ": the segmentation's history keeps " +
+                                std::to_string(m_segmentation.undo_memory_limit() >> 20) +
+                                " MiB of earlier states, and that edit's state was dropped");
       m_done.pop_back();
       m_undone.push_back(last);
       r.undone_line = last.line;

@@ -14,6 +14,7 @@
 #include "huge_pages.h"
 #include "pipeline.h"
 #include "program_options.h"
+#include "program_usage.h"
 
 #include <cstdlib>
 #include <exception>

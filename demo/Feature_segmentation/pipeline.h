@@ -187,6 +187,7 @@ public:
     }
     else
       timer.run("segmentation", [&]() { segmentation.emplace(mesh, common); });
+    segmentation->set_undo_memory_limit(options.undo_memory_mib << 20);
     const FS::Feature_lines<Mesh>& lines = segmentation->feature_lines();
     results.number_of_ridges = lines.number_of_lines(FS::Feature_line_type::RIDGE);
     results.number_of_valleys = lines.number_of_lines(FS::Feature_line_type::VALLEY);

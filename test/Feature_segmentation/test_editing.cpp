@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+#include <CGAL/Feature_segmentation/face_patches.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -95,7 +96,6 @@ BOOST_AUTO_TEST_CASE(local_refine_is_local_and_undoable)
   }
   const std::size_t n = seg.add_to_alpha(region, 0.6);
   BOOST_TEST(n == 5u);
-  BOOST_TEST(n >= 4u); // raising alpha_e never reduces the count in the region
   // vertices away from the edited band (phi outside [0, pi/2]) keep their partition
   std::vector<char> far(m.number_of_vertices(), 0);
   std::size_t i = 0;
@@ -121,14 +121,47 @@ BOOST_AUTO_TEST_CASE(global_refine_and_multiply)
   BOOST_TEST(seg.undo());
   BOOST_TEST(seg.number_of_patches() == 8u);
   BOOST_CHECK_THROW(seg.set_alpha(std::nan("")), FS::Invalid_input);
-  // the undo history is bounded
+  // The history is bounded by memory. An alpha edit on this mesh (no crease, no tie)
+  // makes a new alpha_e (one double per edge) and new labels (one size_t per vertex) and
+  // shares everything else, so each earlier state costs 8 (E + V) bytes: with a limit of
+  // five of them, five edits stay undoable, whatever the number made.
+  const std::size_t per_state = 8 * (num_edges(m) + num_vertices(m));
+  BOOST_TEST(per_state == 8u * (15360u + 5120u));
+  seg.set_undo_memory_limit(5 * per_state);
+  BOOST_TEST(seg.number_of_undoable_edits() <= 5u);
   const std::size_t recorded_before = seg.number_of_recorded_edits();
-  for(std::size_t i = 0; i < Segmentation::maximum_undo_depth + 10; ++i) seg.set_alpha(0.6 + 0.001 * double(i % 2));
-  BOOST_TEST(seg.number_of_undoable_edits() == Segmentation::maximum_undo_depth);
-  // every one was recorded, the oldest dropped: after the kept ones, undo() refuses
-  BOOST_TEST(seg.number_of_recorded_edits() == recorded_before + Segmentation::maximum_undo_depth + 10);
-  for(std::size_t i = 0; i < Segmentation::maximum_undo_depth; ++i) BOOST_TEST(seg.undo());
+  std::vector<std::vector<std::size_t> > kept;
+  for(std::size_t i = 0; i < 20; ++i)
+  {
+    seg.set_alpha(0.6 + 0.4 * double(i % 2));
+    kept.push_back(labels(m, seg));
+  }
+  BOOST_TEST(seg.number_of_undoable_edits() == 5u);
+  BOOST_TEST(seg.undo_memory() == 5 * per_state);
+  // every one was recorded, the oldest dropped: after the kept ones, undo() refuses;
+  // each undo gives back exactly the labels of the edit before
+  BOOST_TEST(seg.number_of_recorded_edits() == recorded_before + 20);
+  for(std::size_t i = 0; i < 5; ++i)
+  {
+    BOOST_TEST(seg.undo());
+    BOOST_TEST((labels(m, seg) == kept[18 - i]));
+  }
   BOOST_TEST(!seg.undo());
+  // undone states count too, and a smaller limit drops them first; after an edit, the
+  // state before it always stays, whatever the limit
+  BOOST_TEST(seg.number_of_redoable_edits() == 5u);
+  BOOST_TEST(seg.undo_memory() == 5 * per_state);
+  seg.set_undo_memory_limit(0);
+  BOOST_TEST(seg.number_of_redoable_edits() == 0u);
+  BOOST_TEST(seg.undo_memory() == 0u);
+  BOOST_TEST(!seg.redo());
+  BOOST_TEST((labels(m, seg) == kept[14]));
+  seg.set_alpha(0.6);
+  BOOST_TEST(seg.number_of_undoable_edits() == 1u);
+  BOOST_TEST(seg.undo_memory() == per_state);
+  BOOST_TEST(seg.undo());
+  BOOST_TEST((labels(m, seg) == kept[14]));
+  seg.set_undo_memory_limit(std::size_t(256) << 20);
   BOOST_CHECK_THROW(seg.multiply_alpha(all, -1.), FS::Invalid_input);
 }
 
@@ -198,11 +231,12 @@ BOOST_AUTO_TEST_CASE(sketch_splits_a_featureless_plane)
   BOOST_CHECK_THROW(seg.add_sketch(sketch, 1.0), FS::Invalid_input);
 }
 
-// Redo makes an undone edit again, exactly: on the torus at alpha 0.6 (4 bands), alpha
-// 1.0 gives 8, a merge across one ridge circle 7, then a sketch round the tube adds
-// feature edges across the bands. Undoing the three and
-// redoing them walks through the same labels, feature edges and cut costs; a new edit
-// after an undo forgets the redo history.
+// Undo and redo are exact after every kind of edit: on the torus at alpha 0.6 (4 bands),
+// alpha 1.0 gives 8, a merge across one ridge circle 7, then a sketch round the tube adds
+// feature edges across the bands, a local coarsening and a local factor change alpha_e
+// in a band. Undoing the five and redoing them walks through the same labels, feature
+// edges, per-edge alpha and weights and cut costs; a new edit after an undo forgets the
+// redo history. A copy of the object shares its history and edits on its own.
 BOOST_AUTO_TEST_CASE(redo_makes_every_kind_of_edit_again)
 {
   fs_test::Lobed_torus torus;
@@ -215,15 +249,28 @@ BOOST_AUTO_TEST_CASE(redo_makes_every_kind_of_edit_again)
     for(auto e : m.edges()) f.push_back(seg.is_feature_edge(e) ? 1 : 0);
     return f;
   };
-  struct Step { std::vector<std::size_t> labels; std::vector<char> features; double cost; std::size_t patches; };
-  std::vector<Step> steps{{labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()}};
+  auto alphas = [&] {
+    std::vector<double> a;
+    for(auto e : m.edges()) { a.push_back(seg.alpha(e)); a.push_back(seg.weight(e)); }
+    return a;
+  };
+  struct Step
+  {
+    std::vector<std::size_t> labels;
+    std::vector<char> features;
+    std::vector<double> alphas;
+    double cost;
+    std::size_t patches;
+  };
+  auto step = [&] { return Step{ labels(m, seg), features(), alphas(), seg.cut_cost(), seg.number_of_patches() }; };
+  std::vector<Step> steps{ step() };
   BOOST_TEST(seg.set_alpha(1.0) == 8u);
-  steps.push_back({labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()});
+  steps.push_back(step());
   std::vector<SM::Face_index> stroke;
   for(auto f : m.faces())
     if(std::abs(tube_angle(m.point(m.target(m.halfedge(f))), torus.R) - M_PI / 2) < 0.15) stroke.push_back(f);
   BOOST_TEST(seg.merge_patches(stroke) == 7u);
-  steps.push_back({labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()});
+  steps.push_back(step());
   // a sketch: the mesh's vertices on one meridian of the tube (a closed loop round it)
   std::vector<Segmentation::Sketch_point> sketch;
   const double theta = 0.05; // the angle round the torus's axis, off the grid's vertices
@@ -246,30 +293,51 @@ BOOST_AUTO_TEST_CASE(redo_makes_every_kind_of_edit_again)
     sketch.push_back({nearest, p});
   }
   seg.add_sketch(sketch);
-  steps.push_back({labels(m, seg), features(), seg.cut_cost(), seg.number_of_patches()});
+  steps.push_back(step());
   BOOST_TEST(steps.back().features != steps[2].features); // the sketch added feature edges
+  // a band round the valley at phi = pi/4, coarsened by 0.5, then its alpha_e halved
+  std::vector<SM::Face_index> band;
+  for(auto f : m.faces())
+    if(std::abs(tube_angle(m.point(m.target(m.halfedge(f))), torus.R) - M_PI / 4) < 0.3) band.push_back(f);
+  seg.add_to_alpha(band, -0.5);
+  steps.push_back(step());
+  BOOST_TEST(steps.back().alphas != steps[3].alphas);
+  seg.multiply_alpha(band, 0.5);
+  steps.push_back(step());
+  BOOST_TEST(steps.back().alphas != steps[4].alphas);
+  const std::size_t last = steps.size() - 1;
   auto check = [&](const Step& s) {
     BOOST_TEST(seg.number_of_patches() == s.patches);
     BOOST_TEST((labels(m, seg) == s.labels));
     BOOST_TEST((features() == s.features));
+    BOOST_TEST((alphas() == s.alphas));
     BOOST_TEST(seg.cut_cost() == s.cost);
   };
-  for(int i = 3; i > 0; --i)
+  for(std::size_t i = last; i > 0; --i)
   {
     BOOST_TEST(seg.undo());
-    BOOST_TEST(seg.number_of_redoable_edits() == std::size_t(4 - i));
+    BOOST_TEST(seg.number_of_redoable_edits() == last + 1 - i);
     check(steps[i - 1]);
   }
-  for(int i = 1; i <= 3; ++i)
+  BOOST_TEST(!seg.undo());
+  for(std::size_t i = 1; i <= last; ++i)
   {
     BOOST_TEST(seg.redo());
     check(steps[i]);
   }
   BOOST_TEST(!seg.redo());
+  // a copy edits on its own: the original keeps its state and its history
+  {
+    Segmentation copy = seg;
+    BOOST_TEST(copy.undo());
+    BOOST_TEST(copy.set_alpha(0.6) != 0u);
+    check(steps[last]);
+    BOOST_TEST(seg.number_of_undoable_edits() == last);
+  }
   // undo twice, then a new edit: nothing left to redo
   BOOST_TEST(seg.undo());
   BOOST_TEST(seg.undo());
-  check(steps[1]);
+  check(steps[last - 2]);
   BOOST_TEST(seg.set_alpha(0.6) == 4u);
   BOOST_TEST(seg.number_of_redoable_edits() == 0u);
   BOOST_TEST(!seg.redo());
@@ -290,6 +358,28 @@ BOOST_AUTO_TEST_CASE(boundaries_from_the_class)
   BOOST_TEST(c.curves().size() == b.curves().size());
   BOOST_TEST(c.length() == b.length(), boost::test_tools::tolerance(1e-12));
   BOOST_TEST(c.anisotropic_length() == b.anisotropic_length(), boost::test_tools::tolerance(1e-12));
+  // one face rule: patch(face) is the area majority under these boundaries, face by face
+  auto by_area = m.add_property_map<SM::Face_index, std::size_t>("f:area").first;
+  auto by_class = m.add_property_map<SM::Face_index, std::size_t>("f:class").first;
+  const std::size_t crossed = FS::majority_face_patches(b, by_area);
+  seg.face_patches(by_class);
+  std::size_t same = 0, differs_from_vertex_majority = 0;
+  for(auto f : m.faces())
+  {
+    same += (get(by_area, f) == seg.patch(f) && get(by_class, f) == seg.patch(f));
+    std::array<std::size_t, 3> l = { 0, 0, 0 };
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) l[k++] = seg.patch(v);
+    const std::size_t majority = (l[0] == l[1] || l[0] == l[2]) ? l[0] : l[1];
+    differs_from_vertex_majority += (l[1] == l[2] || l[0] == l[1] || l[0] == l[2]) && majority != seg.patch(f);
+  }
+  BOOST_TEST(same == m.number_of_faces());
+  // each of the eight circles runs round the torus through one ring of 80 quads between
+  // two rings of vertices, crossing both triangles of every quad
+  BOOST_TEST(crossed == 8u * 80u * 2u);
+  // the rule is not the vertex majority: where a boundary cuts a triangle near its
+  // lone corner, the corner's patch still covers the most area in some faces
+  BOOST_TEST(differs_from_vertex_majority > 0u);
 }
 
 // A solver that throws leaves the object as it was before the edit; bad faces and far

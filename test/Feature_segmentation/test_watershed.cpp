@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(reduced_graph_weights_sum_the_mesh_weights)
   FS::Feature_lines<SM> lines;
   auto np = FS::parameters::alpha(0.8);
   FSI::prepare_segmentation_data(m, np, FSI::read_segmentation_options<SM>(np), data, lines);
-  const auto os = FSI::compute_oversegmentation(data, true);
+  const auto os = FSI::compute_oversegmentation(data, data.features, true);
   BOOST_TEST_MESSAGE("fandisk: " << m.number_of_vertices() << " vertices, " << os.number_of_segments << " oversegments");
   BOOST_TEST(os.number_of_segments < m.number_of_vertices() / 5);
   FSI::Reduced_graph rg;

@@ -258,13 +258,14 @@ namespace internal {
 
 // For callers that hold the segmentation's precomputed data (the segmentation class):
 // boundaries of `labels` (one per vertex id of data.idx) without recomputing curvatures,
-// features and metrics.
+// features and metrics; `features` are data.features or those of an edit state.
 template <typename TriangleMesh>
 Patch_boundaries<TriangleMesh> make_patch_boundaries(const Segmentation_data<TriangleMesh>& data,
+                                                     const Feature_terms& features,
                                                      const std::vector<std::size_t>& labels)
 {
-  Boundary_state<TriangleMesh> state(data.idx, data.vin, data.terms.metrics);
-  state.initialize(labels, data.terms.dual_vertices);
+  Boundary_state<TriangleMesh> state(data.idx, data.vin, data.metrics);
+  state.initialize(labels, features.dual_vertices);
   return Patch_boundaries<TriangleMesh>(state);
 }
 
@@ -318,7 +319,7 @@ Patch_boundaries<TriangleMesh> compute_patch_boundaries(const TriangleMesh& tm, 
         throw Invalid_input("vertex_patch_map holds a negative patch id (" + std::to_string(id) + ")");
     labels[v] = static_cast<std::size_t>(id);
   }
-  return internal::make_patch_boundaries(data, labels);
+  return internal::make_patch_boundaries(data, data.features, labels);
 }
 
 } // namespace Feature_segmentation

@@ -59,8 +59,8 @@ void compute_similarity_and_award(const TriangleMesh& tm, SimilarityMap similari
   internal::prepare_segmentation_data(tm, np, opt, data, lines);
   for(std::size_t e = 0; e < data.idx.number_of_edges(); ++e)
   {
-    put(similarity, data.idx.edge_at(e), data.terms.similarity[e]);
-    put(award, data.idx.edge_at(e), data.terms.award[e]);
+    put(similarity, data.idx.edge_at(e), data.features.similarity[e]);
+    put(award, data.idx.edge_at(e), data.features.award[e]);
   }
 }
 
@@ -88,7 +88,7 @@ std::size_t compute_edge_weights(const TriangleMesh& tm, WeightMap weight,
   const std::vector<double> alpha_e = internal::edge_alphas(data, opt, np);
   for(std::size_t e = 0; e < data.idx.number_of_edges(); ++e)
     put(weight, data.idx.edge_at(e), data.weight(e, alpha_e[e]));
-  return data.number_of_feature_edges;
+  return data.features.number_of_feature_edges;
 }
 
 } // namespace Feature_segmentation

@@ -35,8 +35,10 @@ namespace Feature_segmentation {
 /// passes through, the lone vertex's patch owns the quadrilateral between the vertex,
 /// the boundary's points on its two edges and the face's point; the other patch owns
 /// the rest. At a junction, each vertex's patch owns its quadrilateral. Ties go to the
-/// smallest patch id. Unlike the vertex-majority rule of `segment_along_features()`,
-/// this follows the smoothed boundaries, to within half a triangle.
+/// smallest patch id. This is the package's one face rule: `segment_along_features()`
+/// and `Feature_aligned_segmentation::patch(face_descriptor)` apply it to the unsmoothed
+/// boundaries; after `smooth_patch_boundaries()` it follows the smoothed ones, to within
+/// half a triangle.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam FacePatchMap a `WritablePropertyMap` from `face_descriptor` to an integer type

@@ -36,8 +36,9 @@ namespace Feature_segmentation {
 /// graph instead.
 ///
 /// The vertex labels are the clustering's output; a patch's boundary is the dual of its
-/// cut edges. Faces get the patch of the majority of their three vertices, or the smallest
-/// of the three ids when all differ.
+/// cut edges. A face gets the patch that covers most of its area under these boundaries
+/// (the rule of `majority_face_patches()` on `compute_patch_boundaries()`; ties to the
+/// smallest id): a face whose vertices share a patch gets it.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexPatchMap a `WritablePropertyMap` from `vertex_descriptor` to an integer type

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What the segmentation precomputes once per mesh and feature set: indices, curvature
-// tensors, feature edges and points, the Similarity and Award terms of every edge, and
-// the vertex graph G. Solving for an alpha (or a per-edge alpha) only recombines the
+// tensors, the per-face metrics, the vertex graph G, and the features' part (feature
+// edges and points, dual vertices, the Similarity and Award terms of every edge), which
+// the editing engine shares between states until a sketch changes it. Solving for an alpha (or a per-edge alpha) only recombines the
 // terms into weights and runs the solver; the free function and the editing class share
 // this structure.
 
@@ -108,22 +109,23 @@ public:
   {
     const TriangleMesh& tm = idx.mesh();
     const std::size_t ne = idx.number_of_edges();
-    is_feature_edge.assign(ne, 0);
-    point_sum.assign(ne, Vec3::Zero());
-    point_count.assign(ne, 0);
+    Feature_terms& f = features;
+    f.is_feature_edge.assign(ne, 0);
+    f.point_sum.assign(ne, Vec3::Zero());
+    f.point_count.assign(ne, 0);
     for(std::size_t e = 0; e < ne; ++e)
-      is_feature_edge[e] = get(is_feature, idx.edge_at(e)) ? 1 : 0;
+      f.is_feature_edge[e] = get(is_feature, idx.edge_at(e)) ? 1 : 0;
     // the feature edges are the edges that contain a feature point (paper, 3.1)
     for(const auto& l : lines.lines)
       for(const auto& fp : l.points)
       {
         const std::size_t e = idx.edge_id(fp.halfedge);
-        point_sum[e] += (1 - fp.t) * vin[idx.id(source(fp.halfedge, tm))].p +
-                        fp.t * vin[idx.id(target(fp.halfedge, tm))].p;
-        ++point_count[e];
-        is_feature_edge[e] = 1;
+        f.point_sum[e] += (1 - fp.t) * vin[idx.id(source(fp.halfedge, tm))].p +
+                          fp.t * vin[idx.id(target(fp.halfedge, tm))].p;
+        ++f.point_count[e];
+        f.is_feature_edge[e] = 1;
       }
-    number_of_feature_edges = std::size_t(std::count(is_feature_edge.begin(), is_feature_edge.end(), 1));
+    f.number_of_feature_edges = std::size_t(std::count(f.is_feature_edge.begin(), f.is_feature_edge.end(), 1));
   }
 
   // Similarity and Award; the vertex graph's topology.
@@ -132,7 +134,7 @@ public:
     // gamma (Eq. 5-6) multiplies a curvature, so it is given for curvatures measured on
     // the mesh scaled so that the largest side of its bounding box is 1, as the authors'
     // tool does before anything else: the result does not depend on the file's units.
-    terms.compute(idx, vin, is_feature_edge, point_sum, point_count, gamma, largest_side);
+    Edge_weight_terms<TriangleMesh>::compute(idx, vin, gamma, largest_side, metrics, features);
     const TriangleMesh& tm = idx.mesh();
     edge_vertices.resize(idx.number_of_edges());
     for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
@@ -143,7 +145,7 @@ public:
   }
 
   // w(e) = Similarity(e) - alpha_e Award(e), Eq. 3.
-  double weight(std::size_t e, double alpha_e) const { return terms.similarity[e] - alpha_e * terms.award[e]; }
+  double weight(std::size_t e, double alpha_e) const { return features.weight(e, alpha_e); }
 
   Correlation_clustering_graph graph(const std::vector<double>& alpha_e) const
   {
@@ -156,8 +158,8 @@ public:
 
   std::vector<double> default_alpha(double alpha) const
   {
-    std::vector<double> a(is_feature_edge.size(), 0.);
-    for(std::size_t e = 0; e < a.size(); ++e) if(is_feature_edge[e]) a[e] = alpha;
+    std::vector<double> a(features.is_feature_edge.size(), 0.);
+    for(std::size_t e = 0; e < a.size(); ++e) if(features.is_feature_edge[e]) a[e] = alpha;
     return a;
   }
 
@@ -165,12 +167,9 @@ public:
   std::vector<Vertex_tensor_input> vin;
   double diagonal = 0;
   double largest_side = 0;
-  std::vector<char> is_feature_edge;
-  std::vector<Vec3> point_sum;
-  std::vector<int> point_count;
-  std::size_t number_of_feature_edges = 0;
-  Edge_weight_terms<TriangleMesh> terms;
-  std::vector<std::pair<std::size_t, std::size_t> > edge_vertices;
+  std::vector<Triangle_metric> metrics; // per face: the anisotropic metric of the weights
+  std::vector<std::pair<std::size_t, std::size_t> > edge_vertices; // per edge (and crease tie)
+  Feature_terms features;               // the feature edges and points, the terms
 };
 
 } // namespace internal

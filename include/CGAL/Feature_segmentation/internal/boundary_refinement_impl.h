@@ -8,6 +8,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_BOUNDARY_REFINEMENT_IMPL_H
 
 #include <CGAL/Feature_segmentation/internal/boundary_state.h>
+#include <CGAL/Feature_segmentation/internal/face_patch_rule.h>
 
 #include <CGAL/assertions.h>
 
@@ -23,47 +24,18 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// The patch covering most of face f's area; ties go to the smallest id.
+// The patch covering most of face f's area under the boundaries of `s` (the one rule,
+// face_patch_rule.h).
 template <typename TriangleMesh>
 std::size_t majority_patch(const Boundary_state<TriangleMesh>& s, std::size_t f)
 {
-  typedef typename Boundary_state<TriangleMesh>::Vec3 Vec3;
   const auto& v = s.face_vertices[f];
   if(!s.has_cut_edges(f)) return s.labels[v[0]];
-  auto area = [](const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * (b - a).cross(c - a).norm(); };
-  const double total = area(s.points[v[0]], s.points[v[1]], s.points[v[2]]);
-  // A corner whose two edges are cut owns the quadrilateral (corner, point on its next
-  // edge, the face's point, point on its previous edge); the face's point lies inside
-  // the corner's angle, so the fan from the corner covers it. A corner with one cut edge
-  // shares the rest of the triangle with the other such corner (same patch).
-  std::array<std::pair<std::size_t, double>, 3> owned;
-  double rest = total;
-  std::size_t rest_patch = s.labels[v[0]];
-  int n = 0;
+  std::array<Eigen::Vector3d, 3> edge_point;
   for(int k = 0; k < 3; ++k)
-  {
-    const std::size_t next_edge = s.face_edges[f][k], prev_edge = s.face_edges[f][(k + 2) % 3];
-    if(s.is_cut(next_edge) && s.is_cut(prev_edge))
-    {
-      const Vec3& x = s.face_x[f];
-      const double a = area(s.points[v[k]], s.edge_point(next_edge), x) + area(s.points[v[k]], x, s.edge_point(prev_edge));
-      owned[n++] = { s.labels[v[k]], a };
-      rest -= a;
-    }
-    else
-      rest_patch = s.labels[v[k]];
-  }
-  CGAL_assertion(n == 1 || n == 3); // a through triangle has one such corner, a junction three
-  if(n == 1) owned[n++] = { rest_patch, rest };
-  std::size_t best = owned[0].first;
-  double best_area = owned[0].second;
-  for(int i = 1; i < n; ++i)
-    if(owned[i].second > best_area || (owned[i].second == best_area && owned[i].first < best))
-    {
-      best = owned[i].first;
-      best_area = owned[i].second;
-    }
-  return best;
+    if(s.is_cut(s.face_edges[f][k])) edge_point[k] = s.edge_point(s.face_edges[f][k]);
+  return area_majority_patch({ s.labels[v[0]], s.labels[v[1]], s.labels[v[2]] },
+                             { s.points[v[0]], s.points[v[1]], s.points[v[2]] }, edge_point, s.face_x[f]);
 }
 
 // The refinement as a list of points and patch-labelled triangles (indices into the

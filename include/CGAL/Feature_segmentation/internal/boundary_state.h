@@ -136,14 +136,22 @@ public:
       movable[edge_vertices[e][0]] = movable[edge_vertices[e][1]] = 1;
       const std::size_t f0 = edge_faces[e][0], f1 = edge_faces[e][1];
       if(f0 == npos || f1 == npos) continue;
-      const Vec3 &d0 = dual_vertices[f0], &d1 = dual_vertices[f1];
-      edge_t[e] = minimize_convex(edge_margin, 1 - edge_margin, [&](double t) {
-        const Vec3 p = edge_point(e, t);
-        return (p - d0).norm() + (p - d1).norm();
-      });
+      edge_t[e] = initial_edge_t(points[edge_vertices[e][0]], points[edge_vertices[e][1]], dual_vertices[f0],
+                                 dual_vertices[f1]);
     }
     for(std::size_t f = 0; f < number_of_faces(); ++f)
       face_x[f] = has_cut_edges(f) ? keep_inside(f, dual_vertices[f], face_margin) : Vec3::Zero();
+  }
+
+  // The initial point of an edge from p0 to p1 between two faces with dual vertices d0
+  // and d1 (as a parameter from p0): where the shortest path from d0 to d1 through the
+  // edge crosses it, at least edge_margin from its ends.
+  static double initial_edge_t(const Vec3& p0, const Vec3& p1, const Vec3& d0, const Vec3& d1)
+  {
+    return minimize_convex(edge_margin, 1 - edge_margin, [&](double t) {
+      const Vec3 p = (1 - t) * p0 + t * p1;
+      return (p - d0).norm() + (p - d1).norm();
+    });
   }
 
   // Golden-section search for the minimum of a convex function on [lo, hi] (deterministic;
@@ -212,33 +220,43 @@ public:
     return s;
   }
 
-  // Barycentric coordinates of x in face f (w.r.t. face_vertices[f]); the centroid's on a
-  // degenerate face.
-  std::array<double, 3> barycentric(std::size_t f, const Vec3& x) const
+  // Barycentric coordinates of x in triangle abc; the centroid's on a degenerate one.
+  static std::array<double, 3> barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x)
   {
-    const auto& t = face_vertices[f];
-    const Vec3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
     const Vec3 n = (b - a).cross(c - a);
     const double n2 = n.squaredNorm();
     if(!(n2 > 0)) return { 1. / 3, 1. / 3, 1. / 3 };
     const double wa = (c - b).cross(x - b).dot(n) / n2, wb = (a - c).cross(x - c).dot(n) / n2;
     return { wa, wb, 1 - wa - wb };
   }
+  // x moved towards the centroid of abc until its barycentric coordinates are >= margin.
+  static Vec3 keep_inside(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x, double margin)
+  {
+    std::array<double, 3> w = barycentric(a, b, c, x);
+    const double m = (std::min)(w[0], (std::min)(w[1], w[2]));
+    if(m < margin)
+    {
+      // (1-s) w + s/3 >= margin at the smallest coordinate
+      const double s = (margin - m) / (1. / 3 - m);
+      for(double& k : w) k = (1 - s) * k + s / 3;
+    }
+    return w[0] * a + w[1] * b + w[2] * c;
+  }
+  // The same in face f (w.r.t. face_vertices[f]).
+  std::array<double, 3> barycentric(std::size_t f, const Vec3& x) const
+  {
+    const auto& t = face_vertices[f];
+    return barycentric(points[t[0]], points[t[1]], points[t[2]], x);
+  }
   Vec3 from_barycentric(std::size_t f, const std::array<double, 3>& w) const
   {
     const auto& t = face_vertices[f];
     return w[0] * points[t[0]] + w[1] * points[t[1]] + w[2] * points[t[2]];
   }
-  // x moved towards the centroid until its barycentric coordinates are >= margin.
   Vec3 keep_inside(std::size_t f, const Vec3& x, double margin) const
   {
-    std::array<double, 3> w = barycentric(f, x);
-    const double m = (std::min)(w[0], (std::min)(w[1], w[2]));
-    if(m >= margin) return from_barycentric(f, w);
-    // (1-s) w + s/3 >= margin at the smallest coordinate
-    const double s = (margin - m) / (1. / 3 - m);
-    for(double& c : w) c = (1 - s) * c + s / 3;
-    return from_barycentric(f, w);
+    const auto& t = face_vertices[f];
+    return keep_inside(points[t[0]], points[t[1]], points[t[2]], x, margin);
   }
 
   // Ring of vertex v: entries [ring_begin(v), ring_end(v)) of ring_entries.

@@ -56,58 +56,78 @@ struct Vertex_tensor_input
   Eigen::Vector3d d1 = Eigen::Vector3d::Zero(), d2 = Eigen::Vector3d::Zero();
 };
 
-template <typename TriangleMesh>
-class Edge_weight_terms
+// What the features decide (a sketch changes it; the editing engine shares one between
+// its states until a sketch makes a new one): the feature edges and the feature points
+// on them, the dual vertices, Similarity and Award.
+struct Feature_terms
 {
-public:
+  typedef Eigen::Vector3d Vec3;
+
+  std::vector<char> is_feature_edge;     // per edge (and crease tie)
+  std::vector<Vec3> point_sum;           // per edge: sum of its feature points
+  std::vector<int> point_count;          // per edge: their number
+  std::size_t number_of_feature_edges = 0;
+  std::vector<Vec3> dual_vertices;       // per face
+  std::vector<double> similarity, award; // per edge (and crease tie)
+
+  // w(e) = Similarity(e) - alpha_e Award(e), Eq. 3.
+  double weight(std::size_t e, double alpha_e) const { return similarity[e] - alpha_e * award[e]; }
+
+  std::size_t memory() const
+  {
+    return is_feature_edge.capacity() + point_sum.capacity() * sizeof(Vec3) + point_count.capacity() * sizeof(int) +
+           dual_vertices.capacity() * sizeof(Vec3) + (similarity.capacity() + award.capacity()) * sizeof(double);
+  }
+};
+
+// The computations of the terms, on the per-face metrics and the features' points.
+template <typename TriangleMesh>
+struct Edge_weight_terms
+{
   typedef Mesh_indexing<TriangleMesh> Indexing;
   typedef Eigen::Vector3d Vec3;
 
-  // `point_sum[e]`, `point_count[e]`: sum and count of the feature points on edge e.
-  // `curvature_scale`: the length by which curvatures are multiplied before gamma applies.
-  void compute(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
-               const std::vector<char>& is_feature_edge,
-               const std::vector<Vec3>& point_sum, const std::vector<int>& point_count,
-               double gamma, double curvature_scale)
+  // The metrics of every face, then the dual vertices and terms of `f` (whose feature
+  // edges and points are set). `curvature_scale`: the length by which curvatures are
+  // multiplied before gamma applies.
+  static void compute(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin, double gamma,
+                      double curvature_scale, std::vector<Triangle_metric>& metrics, Feature_terms& f)
   {
     const TriangleMesh& tm = idx.mesh();
     const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
     metrics.assign(nf, Triangle_metric());
-    dual_vertices.assign(nf, Vec3::Zero());
-    for(std::size_t f = 0; f < nf; ++f)
+    f.dual_vertices.assign(nf, Vec3::Zero());
+    for(std::size_t i = 0; i < nf; ++i)
     {
-      auto h = halfedge(idx.face_at(f), tm);
-      metrics[f] = triangle_metric(vin[idx.id(source(h, tm))], vin[idx.id(target(h, tm))],
+      auto h = halfedge(idx.face_at(i), tm);
+      metrics[i] = triangle_metric(vin[idx.id(source(h, tm))], vin[idx.id(target(h, tm))],
                                    vin[idx.id(target(next(h, tm), tm))], gamma, curvature_scale);
-      dual_vertices[f] = dual_vertex(idx, vin, is_feature_edge, point_sum, point_count, f);
+      f.dual_vertices[i] = dual_vertex(idx, vin, f, i);
     }
-    similarity.assign(ne, 0.);
-    award.assign(ne, 0.);
+    f.similarity.assign(ne, 0.);
+    f.award.assign(ne, 0.);
     for(std::size_t e = 0; e < ne; ++e)
-      edge_terms(idx, vin, point_sum, point_count, e);
+      edge_terms(idx, vin, metrics, f, e);
   }
 
   // After the features of some edges changed (a sketch): the dual vertices of `faces`
   // and the terms of their edges.
-  void update_faces(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
-                    const std::vector<char>& is_feature_edge,
-                    const std::vector<Vec3>& point_sum, const std::vector<int>& point_count,
-                    const std::vector<std::size_t>& faces)
+  static void update_faces(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+                           const std::vector<Triangle_metric>& metrics, Feature_terms& f,
+                           const std::vector<std::size_t>& faces)
   {
     const TriangleMesh& tm = idx.mesh();
-    for(std::size_t f : faces)
-      dual_vertices[f] = dual_vertex(idx, vin, is_feature_edge, point_sum, point_count, f);
-    for(std::size_t f : faces)
-      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-        edge_terms(idx, vin, point_sum, point_count, idx.edge_id(h));
+    for(std::size_t i : faces)
+      f.dual_vertices[i] = dual_vertex(idx, vin, f, i);
+    for(std::size_t i : faces)
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(i), tm), tm))
+        edge_terms(idx, vin, metrics, f, idx.edge_id(h));
   }
 
   // Dual vertex: centroid of the feature points on the face's feature edges, if any (a
   // feature edge without located points contributes its midpoint), else the centroid.
   static Vec3 dual_vertex(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
-                          const std::vector<char>& is_feature_edge,
-                          const std::vector<Vec3>& point_sum, const std::vector<int>& point_count,
-                          std::size_t f)
+                          const Feature_terms& ft, std::size_t f)
   {
     const TriangleMesh& tm = idx.mesh();
     Vec3 sum = Vec3::Zero(), centroid = Vec3::Zero();
@@ -116,26 +136,26 @@ public:
     {
       centroid += vin[idx.id(target(h, tm))].p / 3.;
       const std::size_t e = idx.edge_id(h);
-      if(!is_feature_edge[e]) continue;
-      sum += point_count[e] > 0 ? Vec3(point_sum[e] / point_count[e])
-                                : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
+      if(!ft.is_feature_edge[e]) continue;
+      sum += ft.point_count[e] > 0 ? Vec3(ft.point_sum[e] / ft.point_count[e])
+                                   : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
       ++count;
     }
     return count > 0 ? Vec3(sum / count) : centroid;
   }
 
-  void edge_terms(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
-                  const std::vector<Vec3>& point_sum, const std::vector<int>& point_count, std::size_t e)
+  static void edge_terms(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+                         const std::vector<Triangle_metric>& metrics, Feature_terms& ft, std::size_t e)
   {
     const TriangleMesh& tm = idx.mesh();
     auto h = halfedge(idx.edge_at(e), tm);
     const std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
-    similarity[e] = award[e] = 0.;
+    ft.similarity[e] = ft.award[e] = 0.;
     if(f1 != Indexing::npos && f2 != Indexing::npos)
     {
-      const Vec3 w = dual_vertices[f2] - dual_vertices[f1];
-      similarity[e] = 0.5 * (metrics[f1].anisotropic(w) + metrics[f2].anisotropic(w));
-      award[e] = 0.5 * (metrics[f1].euclidean(w) + metrics[f2].euclidean(w));
+      const Vec3 w = ft.dual_vertices[f2] - ft.dual_vertices[f1];
+      ft.similarity[e] = 0.5 * (metrics[f1].anisotropic(w) + metrics[f2].anisotropic(w));
+      ft.award[e] = 0.5 * (metrics[f1].euclidean(w) + metrics[f2].euclidean(w));
       return;
     }
     // Border edge: a boundary cutting it runs from the dual vertex of its one face to the
@@ -143,12 +163,12 @@ public:
     // midpoint) takes the place of the dual segment.
     const std::size_t f = (f1 != Indexing::npos) ? f1 : f2;
     if(f == Indexing::npos) return; // an isolated edge: no face, weight 0
-    const Vec3 end = point_count[e] > 0
-                       ? Vec3(point_sum[e] / point_count[e])
+    const Vec3 end = ft.point_count[e] > 0
+                       ? Vec3(ft.point_sum[e] / ft.point_count[e])
                        : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
-    const Vec3 w = end - dual_vertices[f];
-    similarity[e] = metrics[f].anisotropic(w);
-    award[e] = metrics[f].euclidean(w);
+    const Vec3 w = end - ft.dual_vertices[f];
+    ft.similarity[e] = metrics[f].anisotropic(w);
+    ft.award[e] = metrics[f].euclidean(w);
   }
 
   // Per-triangle tensor: the vertices' curvature tensors k1 d1 d1^T + k2 d2 d2^T are
@@ -187,9 +207,6 @@ public:
     return m;
   }
 
-  std::vector<Triangle_metric> metrics;  // per face
-  std::vector<Vec3> dual_vertices;       // per face
-  std::vector<double> similarity, award; // per edge
 };
 
 } // namespace internal

@@ -34,8 +34,8 @@ template <typename TriangleMesh>
 // With `vertex_in_region`, only the region is oversegmented (a sketch edit redoes the
 // patches it touches): the faces whose three vertices are in the region, and the
 // region's vertices; the others get `std::size_t(-1)` in `vertex_segment`.
-Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>& data, bool anisotropic,
-                                          const std::vector<char>* vertex_in_region = nullptr)
+Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>& data, const Feature_terms& features,
+                                          bool anisotropic, const std::vector<char>* vertex_in_region = nullptr)
 {
   const auto& idx = data.idx;
   const TriangleMesh& tm = idx.mesh();
@@ -56,14 +56,14 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
     std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
     if(f1 != Mesh_indexing<TriangleMesh>::npos && !face_in[f1]) f1 = Mesh_indexing<TriangleMesh>::npos;
     if(f2 != Mesh_indexing<TriangleMesh>::npos && !face_in[f2]) f2 = Mesh_indexing<TriangleMesh>::npos;
-    if(data.is_feature_edge[e])
+    if(features.is_feature_edge[e])
     {
       if(f1 != Mesh_indexing<TriangleMesh>::npos) source[f1] = 1;
       if(f2 != Mesh_indexing<TriangleMesh>::npos) source[f2] = 1;
     }
     if(f1 == Mesh_indexing<TriangleMesh>::npos || f2 == Mesh_indexing<TriangleMesh>::npos) continue;
     dual.emplace_back(f1, f2);
-    len.push_back(anisotropic ? data.terms.similarity[e] : data.terms.award[e]);
+    len.push_back(anisotropic ? features.similarity[e] : features.award[e]);
   }
   const Csr_graph g = Csr_graph::from_edges(nf, dual, len);
   std::vector<double> height = multi_source_distances(g, source);
@@ -100,14 +100,14 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   // Vertex adjacency through non-feature edges (feature edges are never crossed below).
   std::vector<std::size_t> adj_begin(nv + 1, 0), adj;
   for(std::size_t e = 0; e < data.edge_vertices.size(); ++e)
-    if(!data.is_feature_edge[e] && in_region(data.edge_vertices[e].first) && in_region(data.edge_vertices[e].second))
+    if(!features.is_feature_edge[e] && in_region(data.edge_vertices[e].first) && in_region(data.edge_vertices[e].second))
     { ++adj_begin[data.edge_vertices[e].first + 1]; ++adj_begin[data.edge_vertices[e].second + 1]; }
   for(std::size_t v = 0; v < nv; ++v) adj_begin[v + 1] += adj_begin[v];
   adj.resize(adj_begin[nv]);
   {
     std::vector<std::size_t> fill(adj_begin.begin(), adj_begin.end() - 1);
     for(std::size_t e = 0; e < data.edge_vertices.size(); ++e)
-      if(!data.is_feature_edge[e] && in_region(data.edge_vertices[e].first) && in_region(data.edge_vertices[e].second))
+      if(!features.is_feature_edge[e] && in_region(data.edge_vertices[e].first) && in_region(data.edge_vertices[e].second))
       {
         const auto& ev = data.edge_vertices[e];
         adj[fill[ev.first]++] = ev.second;

@@ -10,6 +10,7 @@
 #include <CGAL/Feature_segmentation/crest_lines.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
+#include <CGAL/Feature_segmentation/internal/stage_times.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Dynamic_property_map.h>
@@ -41,11 +42,13 @@ Segmentation_options read_segmentation_options(const NamedParameters& np)
 // feature lines used (detected or the user's), empty when only an edge map was given.
 // The curvature fit and the crest lines work on data.idx, the one indexing of `tm`;
 // `check_mesh` false: the caller has checked `tm` (or built it from a checked mesh).
+// `times`, if given, receives the seconds of the curvature, feature and term stages.
 template <typename TriangleMesh, typename NamedParameters>
 void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np,
                                const Segmentation_options& opt,
                                Segmentation_data<TriangleMesh>& data,
-                               Feature_lines<TriangleMesh>& lines_out, bool check_mesh = true)
+                               Feature_lines<TriangleMesh>& lines_out, bool check_mesh = true,
+                               Stage_times* times = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -62,6 +65,7 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
   auto own_features = get(CGAL::dynamic_edge_property_t<bool>(), tm);
 
   auto with_curvature = [&](auto cmap) {
+    Stage_timer timer(times != nullptr ? &times->feature_lines : nullptr);
     data.set_geometry(vpm, cmap);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value)
     {
@@ -91,12 +95,16 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
 
   if constexpr(is_default_parameter<NamedParameters, internal_np::principal_curvature_map_t>::value)
   {
-    estimate_principal_curvatures(data.idx, own_curvature, np);
+    {
+      Stage_timer timer(times != nullptr ? &times->curvature : nullptr);
+      estimate_principal_curvatures(data.idx, own_curvature, np);
+    }
     with_curvature(own_curvature);
   }
   else
     with_curvature(get_parameter(np, internal_np::principal_curvature_map));
 
+  Stage_timer timer(times != nullptr ? &times->weight_terms : nullptr);
   data.compute_terms(opt.gamma);
 }
 

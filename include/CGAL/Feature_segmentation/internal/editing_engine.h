@@ -1,0 +1,389 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The editing engine behind Feature_aligned_segmentation: one read-only precomputation
+// (Edit_precomputation) and a history of immutable states (Edit_history). Every edit
+// builds its new state aside, sharing the parts it does not change with the current
+// state, and publishes it only once it is complete: an edit that throws (a user solver,
+// memory) leaves the engine as it was, and undo and redo are exact because no state is
+// ever modified.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_EDITING_ENGINE_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_EDITING_ENGINE_H
+
+#include <CGAL/Feature_segmentation/internal/boundary_state.h>
+#include <CGAL/Feature_segmentation/internal/edit_history.h>
+#include <CGAL/Feature_segmentation/internal/edit_precomputation.h>
+#include <CGAL/Feature_segmentation/internal/face_patch_rule.h>
+#include <CGAL/Feature_segmentation/internal/sketch_walk.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+template <typename TriangleMesh>
+class Editing_engine
+{
+public:
+  typedef Edit_precomputation<TriangleMesh> Precomputation;
+  typedef typename Precomputation::GTr GTr;
+  typedef typename Precomputation::face_descriptor face_descriptor;
+
+  template <typename NamedParameters>
+  Editing_engine(const TriangleMesh& tm, const NamedParameters& np)
+  {
+    m_pre = std::make_shared<const Precomputation>(tm, np, m_times);
+    const Precomputation& p = *m_pre;
+    auto s = std::make_shared<Edit_state>();
+    s->alpha = p.opt.alpha;
+    s->alpha_e = std::make_shared<const std::vector<double> >(p.alpha_e);
+    // the initial features are those of the precomputation's data (aliasing: no copy)
+    s->features = std::shared_ptr<const Feature_terms>(m_pre, &p.data->features);
+    auto red = std::make_shared<Reduction>();
+    {
+      Stage_timer timer(&m_times.oversegmentation);
+      build_reduction(*red, *s->features, nullptr);
+    }
+    s->reduction = red;
+    std::vector<std::size_t> group(red->os.number_of_segments);
+    for(std::size_t i = 0; i < group.size(); ++i) group[i] = i;
+    s->group = std::make_shared<const std::vector<std::size_t> >(std::move(group));
+    s->labels = std::make_shared<const std::vector<std::size_t> >();
+    solve(*s, nullptr);
+    m_history = Edit_history(std::move(s));
+  }
+
+  const Precomputation& precomputation() const { return *m_pre; }
+  const Edit_state& state() const { return m_history.current(); }
+  const Edit_history& history() const { return m_history; }
+  Edit_history& history() { return m_history; }
+  const Stage_times& stage_times() const { return m_times; }
+
+  double weight(const Edit_state& s, std::size_t e) const { return s.features->weight(e, (*s.alpha_e)[e]); }
+
+  std::size_t set_alpha(double a)
+  {
+    return edit([&](Edit_state& s) {
+      const double shift = a - s.alpha;
+      auto alpha_e = std::make_shared<std::vector<double> >(*s.alpha_e);
+      for(std::size_t e = 0; e < alpha_e->size(); ++e)
+        if(s.features->is_feature_edge[e]) (*alpha_e)[e] += shift;
+      s.alpha = a;
+      s.alpha_e = alpha_e;
+      solve(s, nullptr);
+      return true;
+    });
+  }
+
+  // Applies `change` to the alpha_e of the feature edges of `faces` (and the ties of their
+  // creases), then re-solves the patches the faces touch.
+  template <typename FaceRange, typename Change>
+  std::size_t edit_region(const FaceRange& faces, Change change)
+  {
+    return edit([&](Edit_state& s) {
+      const std::set<std::size_t> touched = patches_of(s, faces);
+      if(touched.empty()) return false;
+      const Precomputation& p = *m_pre;
+      const TriangleMesh& tm = p.working_mesh();
+      auto alpha_e = std::make_shared<std::vector<double> >(*s.alpha_e);
+      std::vector<char> done(alpha_e->size(), 0);
+      for(face_descriptor f : faces)
+        for(auto h : CGAL::halfedges_around_face(halfedge(p.working_face(f), tm), tm))
+        {
+          const std::size_t e = p.working_indexing().edge_id(h);
+          const auto t = p.ties_of_working_edge(e);
+          for(std::size_t i = t.first; i < t.second; ++i) // a crease's ties
+            if(!done[i]) { done[i] = 1; (*alpha_e)[i] = change((*alpha_e)[i]); }
+          if(!s.features->is_feature_edge[e] || done[e]) continue;
+          done[e] = 1;
+          (*alpha_e)[e] = change((*alpha_e)[e]);
+        }
+      s.alpha_e = alpha_e;
+      solve_patches(s, touched, nullptr);
+      return true;
+    });
+  }
+
+  template <typename FaceRange>
+  std::size_t merge_patches(const FaceRange& faces)
+  {
+    return edit([&](Edit_state& s) {
+      const std::set<std::size_t> touched = patches_of(s, faces);
+      if(touched.size() < 2) return false;
+      const std::vector<std::size_t>& seg = s.reduction->os.vertex_segment;
+      const std::vector<std::size_t>& old_group = *s.group;
+      std::size_t target_group = std::size_t(-1);
+      std::vector<char> group_in(old_group.size(), 0);
+      for(std::size_t v = 0; v < seg.size(); ++v)
+        if(touched.count((*s.labels)[v]))
+        {
+          group_in[old_group[seg[v]]] = 1;
+          target_group = (std::min)(target_group, old_group[seg[v]]);
+        }
+      auto group = std::make_shared<std::vector<std::size_t> >(old_group);
+      for(std::size_t& g : *group)
+        if(group_in[g]) g = target_group;
+      auto labels = std::make_shared<std::vector<std::size_t> >(*s.labels);
+      const std::size_t merged = *touched.begin();
+      for(std::size_t& l : *labels) if(touched.count(l)) l = merged;
+      s.number_of_patches = normalize_labels(*labels);
+      s.group = group;
+      s.labels = labels;
+      return true;
+    });
+  }
+
+  // The edges that `sketch` crosses become feature edges with alpha_e at least
+  // `sketch_alpha`; the terms around them, the oversegmentation inside the patches the
+  // sketch touches, and those patches' clustering are redone.
+  std::size_t add_sketch(const std::vector<Sketch_input>& sketch, double sketch_alpha)
+  {
+    const Precomputation& p = *m_pre;
+    const std::vector<Sketch_crossing> crossings = walk_sketch(*p.data, sketch);
+    if(crossings.empty()) return state().number_of_patches;
+    return edit([&](Edit_state& s) {
+      const Segmentation_data<TriangleMesh>& d = *p.data;
+      const TriangleMesh& tm = p.working_mesh();
+      auto features = std::make_shared<Feature_terms>(*s.features);
+      auto alpha_e = std::make_shared<std::vector<double> >(*s.alpha_e);
+      const std::vector<std::size_t>& labels = *s.labels;
+      std::vector<std::size_t> faces;
+      std::set<std::size_t> touched;
+      for(const Sketch_crossing& c : crossings)
+      {
+        features->point_sum[c.edge] += c.point;
+        ++features->point_count[c.edge];
+        features->is_feature_edge[c.edge] = 1;
+        (*alpha_e)[c.edge] = (std::max)((*alpha_e)[c.edge], sketch_alpha);
+        auto h = halfedge(d.idx.edge_at(c.edge), tm);
+        for(auto hh : { h, opposite(h, tm) })
+          if(!is_border(hh, tm)) faces.push_back(d.idx.face_id(hh));
+        touched.insert(labels[d.edge_vertices[c.edge].first]);
+        touched.insert(labels[d.edge_vertices[c.edge].second]);
+      }
+      std::sort(faces.begin(), faces.end());
+      faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+      Edge_weight_terms<TriangleMesh>::update_faces(d.idx, d.vin, d.metrics, *features, faces);
+      features->number_of_feature_edges = p.count_feature_edges(*features);
+      // redo the oversegmentation inside the touched patches
+      std::vector<char> region(labels.size(), 0);
+      for(std::size_t v = 0; v < region.size(); ++v) region[v] = touched.count(labels[v]) ? 1 : 0;
+      auto red = std::make_shared<Reduction>();
+      std::vector<std::size_t> group;
+      {
+        m_times.oversegmentation = 0;
+        Stage_timer timer(&m_times.oversegmentation);
+        rebuild_reduction_in(s, *features, region, *red, group);
+      }
+      s.features = features;
+      s.alpha_e = alpha_e;
+      s.reduction = red;
+      s.group = std::make_shared<const std::vector<std::size_t> >(std::move(group));
+      solve_patches(s, touched, &region);
+      return true;
+    });
+  }
+
+  bool undo() { return m_history.undo(); }
+  bool redo() { return m_history.redo(); }
+
+  // The patches of the vertices of `faces` in state `s`.
+  template <typename FaceRange>
+  std::set<std::size_t> patches_of(const Edit_state& s, const FaceRange& faces) const
+  {
+    const Precomputation& p = *m_pre;
+    const TriangleMesh& tm = p.working_mesh();
+    std::set<std::size_t> touched;
+    for(face_descriptor f : faces)
+    {
+      check_face(f);
+      for(auto h : CGAL::halfedges_around_face(halfedge(p.working_face(f), tm), tm))
+        touched.insert((*s.labels)[p.working_indexing().id(target(h, tm))]);
+    }
+    return touched;
+  }
+
+  // The patch of working face `f` in state `s` by the one face rule (face_patch_rule.h)
+  // under the boundaries of its labels as patch_boundaries() makes them, computed on the
+  // face alone: the same as majority_patch() on make_patch_boundaries(), without it.
+  std::size_t face_patch(const Edit_state& s, std::size_t f) const
+  {
+    typedef Boundary_state<TriangleMesh> B;
+    const Segmentation_data<TriangleMesh>& d = *m_pre->data;
+    const Mesh_indexing<TriangleMesh>& idx = d.idx;
+    const TriangleMesh& tm = idx.mesh();
+    const std::vector<std::size_t>& labels = *s.labels;
+    const auto h = halfedge(idx.face_at(f), tm);
+    const std::array<typename GTr::halfedge_descriptor, 3> hs = { h, next(h, tm), prev(h, tm) };
+    std::array<std::size_t, 3> l;
+    std::array<Eigen::Vector3d, 3> p, edge_point;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t v = idx.id(source(hs[k], tm)); // corner k: the source of edge k
+      l[k] = labels[v];
+      p[k] = d.vin[v].p;
+    }
+    if(l[0] == l[1] && l[1] == l[2]) return l[0];
+    const std::vector<Eigen::Vector3d>& dual = s.features->dual_vertices;
+    for(int k = 0; k < 3; ++k)
+    {
+      if(l[k] == l[(k + 1) % 3]) continue;
+      // as Boundary_state::initialize, in the orientation of the edge's own halfedge
+      const auto eh = halfedge(edge(hs[k], tm), tm);
+      const Eigen::Vector3d& a = d.vin[idx.id(source(eh, tm))].p;
+      const Eigen::Vector3d& b = d.vin[idx.id(target(eh, tm))].p;
+      const std::size_t f0 = idx.face_id(eh), f1 = idx.face_id(opposite(eh, tm));
+      const double t = (f0 == B::npos || f1 == B::npos) ? 0.5 : B::initial_edge_t(a, b, dual[f0], dual[f1]);
+      edge_point[k] = (1 - t) * a + t * b;
+    }
+    return area_majority_patch(l, p, edge_point, B::keep_inside(p[0], p[1], p[2], dual[f], B::face_margin));
+  }
+
+  static void check_face(face_descriptor f)
+  {
+    if(f == boost::graph_traits<TriangleMesh>::null_face())
+      throw Invalid_input("a face of the edit is the null face");
+  }
+
+private:
+  // Runs `make` on a copy of the current state (sharing all its parts); if it returns
+  // true, the copy becomes the new current state. Returns the number of patches.
+  template <typename Make>
+  std::size_t edit(Make make)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    auto s = std::make_shared<Edit_state>(state());
+    if(make(*s)) m_history.push(std::move(s));
+    m_times.last_edit = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return state().number_of_patches;
+  }
+
+  void build_reduction(Reduction& r, const Feature_terms& features, const std::vector<char>* region) const
+  {
+    const Precomputation& p = *m_pre;
+    r.os = p.reduced ? compute_oversegmentation(*p.data, features, p.anisotropic, region) : singletons(region);
+    if(region == nullptr) r.rg.build(r.os.vertex_segment, r.os.number_of_segments, p.data->edge_vertices);
+  }
+
+  Oversegmentation singletons(const std::vector<char>* region) const
+  {
+    Oversegmentation os;
+    os.vertex_segment.assign(m_pre->working_indexing().number_of_vertices(), std::size_t(-1));
+    for(std::size_t v = 0; v < os.vertex_segment.size(); ++v)
+      if(region == nullptr || (*region)[v]) os.vertex_segment[v] = os.number_of_segments++;
+    return os;
+  }
+
+  // The oversegmentation of state `s` with its segments inside `region` redone on
+  // `features`: the segments outside keep their merge groups (ids compacted), the new
+  // ones are free.
+  void rebuild_reduction_in(const Edit_state& s, const Feature_terms& features, const std::vector<char>& region,
+                            Reduction& out, std::vector<std::size_t>& group) const
+  {
+    Reduction local;
+    build_reduction(local, features, &region);
+    const std::vector<std::size_t>& old_seg = s.reduction->os.vertex_segment;
+    const std::vector<std::size_t>& old_group = *s.group;
+    std::vector<std::size_t> renum(s.reduction->os.number_of_segments, std::size_t(-1));
+    group.clear();
+    std::size_t k = 0;
+    for(std::size_t v = 0; v < region.size(); ++v)
+    {
+      if(region[v]) continue;
+      std::size_t& r = renum[old_seg[v]];
+      if(r == std::size_t(-1)) { r = k++; group.push_back(old_group[old_seg[v]]); }
+    }
+    const std::size_t first_new = k;
+    out.os.vertex_segment.resize(region.size());
+    for(std::size_t v = 0; v < region.size(); ++v)
+      out.os.vertex_segment[v] = region[v] ? first_new + local.os.vertex_segment[v] : renum[old_seg[v]];
+    out.os.number_of_segments = first_new + local.os.number_of_segments;
+    std::vector<std::size_t> group_renum(old_group.size() + local.os.number_of_segments, std::size_t(-1));
+    std::size_t ng = 0;
+    for(std::size_t& g : group)
+    {
+      if(group_renum[g] == std::size_t(-1)) group_renum[g] = ng++;
+      g = group_renum[g];
+    }
+    for(std::size_t i = 0; i < local.os.number_of_segments; ++i) group.push_back(ng++);
+    out.rg.build(out.os.vertex_segment, out.os.number_of_segments, m_pre->data->edge_vertices);
+  }
+
+  // Re-solves the patches in `touched` (given by label; or by `vertex_region` after a
+  // sketch, whose segments are new).
+  void solve_patches(Edit_state& s, const std::set<std::size_t>& touched, const std::vector<char>* vertex_region)
+  {
+    const std::vector<std::size_t>& group = *s.group;
+    const std::size_t ngroups = *std::max_element(group.begin(), group.end()) + 1;
+    std::vector<char> in(ngroups, 0);
+    const std::vector<std::size_t>& seg = s.reduction->os.vertex_segment;
+    for(std::size_t v = 0; v < seg.size(); ++v)
+      if(vertex_region != nullptr ? (*vertex_region)[v] != 0 : touched.count((*s.labels)[v]) != 0)
+        in[group[seg[v]]] = 1;
+    solve(s, &in);
+  }
+
+  // Clusters the groups of oversegments whose `group_in_region` is set (all if null);
+  // the others keep their labels. Nodes of the solved graph are merge groups (a
+  // constraint never cut).
+  void solve(Edit_state& s, const std::vector<char>* group_in_region)
+  {
+    const Reduction& r = *s.reduction;
+    const std::vector<std::size_t>& group = *s.group;
+    std::vector<std::size_t> node;
+    std::size_t n = 0;
+    Correlation_clustering_graph graph(0);
+    {
+      m_times.graph = 0;
+      Stage_timer timer(&m_times.graph);
+      const std::size_t ngroups = group.empty() ? 0 : *std::max_element(group.begin(), group.end()) + 1;
+      node.assign(ngroups, std::size_t(-1));
+      for(std::size_t g = 0; g < ngroups; ++g)
+        if(group_in_region == nullptr || (*group_in_region)[g]) node[g] = n++;
+      graph = Correlation_clustering_graph(n);
+      for(std::size_t i = 0; i < r.rg.edges.size(); ++i)
+      {
+        const std::size_t a = node[group[r.rg.edges[i].first]], b = node[group[r.rg.edges[i].second]];
+        if(a == std::size_t(-1) || b == std::size_t(-1) || a == b) continue;
+        double sum = 0;
+        for(std::size_t k = r.rg.cross_begin[i]; k < r.rg.cross_begin[i + 1]; ++k) sum += weight(s, r.rg.cross[k]);
+        graph.add_edge(a, b, sum);
+      }
+    }
+    std::vector<std::size_t> lab;
+    {
+      m_times.solve = 0;
+      Stage_timer timer(&m_times.solve);
+      m_pre->solver(graph, lab);
+    }
+    CGAL_postcondition(lab.size() == n);
+    m_times.labels = 0;
+    Stage_timer timer(&m_times.labels);
+    const bool everything = (group_in_region == nullptr);
+    const std::size_t offset = everything ? 0 : s.number_of_patches;
+    auto labels = everything ? std::make_shared<std::vector<std::size_t> >(r.os.vertex_segment.size(), 0)
+                             : std::make_shared<std::vector<std::size_t> >(*s.labels);
+    for(std::size_t v = 0; v < labels->size(); ++v)
+    {
+      const std::size_t nd = node[group[r.os.vertex_segment[v]]];
+      if(nd != std::size_t(-1)) (*labels)[v] = offset + lab[nd];
+    }
+    s.number_of_patches = normalize_labels(*labels);
+    s.labels = labels;
+  }
+
+  std::shared_ptr<const Precomputation> m_pre;
+  Edit_history m_history;
+  Stage_times m_times;
+};
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_EDITING_ENGINE_H
