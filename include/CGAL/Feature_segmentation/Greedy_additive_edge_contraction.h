@@ -56,10 +56,7 @@ public:
                          std::vector<std::size_t>& labels) const
   {
     internal::Simple_adjacency adj;
-    internal::build_simple_adjacency(g, adj);
-    internal::Greedy_additive_edge_contraction_impl impl;
-    impl.run(adj, labels);
-    return normalize_labels(labels);
+    return internal::greedy_additive_edge_contraction(g, adj, labels);
   }
 };
 

@@ -93,22 +93,16 @@ public:
   {}
 
   /*!
-    computes a clustering of `g`; same result as the sequence of the two solvers.
-
-    \param g the graph.
-    \param labels ignored on entry; on exit, the cluster of every node, normalised as by
-           `normalize_labels()`.
-    \return the number of clusters.
+    computes a clustering of `g` into `labels` and returns the number of clusters, as the
+    `CorrelationClusteringSolver` concept asks: the result of the sequence of the two
+    solvers, which here share one adjacency.
   */
   std::size_t operator()(const Correlation_clustering_graph& g,
                          std::vector<std::size_t>& labels) const
   {
     // Same as Solver_sequence::operator(), but both stages share one adjacency.
     internal::Simple_adjacency adj;
-    internal::build_simple_adjacency(g, adj);
-    internal::Greedy_additive_edge_contraction_impl gaec;
-    gaec.run(adj, labels);
-    normalize_labels(labels);
+    internal::greedy_additive_edge_contraction(g, adj, labels);
     internal::Kernighan_lin_with_joins_impl klj(second().number_of_iterations(),
                                                 second().epsilon(),
                                                 second().moves_without_improvement());

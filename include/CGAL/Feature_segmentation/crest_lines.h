@@ -127,10 +127,7 @@ Feature_lines<TriangleMesh>
 detect_crest_lines(const TriangleMesh& tm, VertexCurvatureMap curvature_map,
                    const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = internal::vertex_point_map(tm, np);
+  const auto vpm = internal::vertex_point_map(tm, np);
   const internal::Crest_options opt = internal::read_crest_options(np); // the options' errors first
   check_input_mesh(tm, true, CGAL::parameters::vertex_point_map(vpm));
   const internal::Mesh_indexing<TriangleMesh> idx(tm);

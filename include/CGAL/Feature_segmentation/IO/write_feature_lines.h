@@ -65,6 +65,60 @@ inline const char* feature_line_type_name(Feature_line_type type)
   }
 }
 
+// The two formats, on the points of `vpm`, at full precision.
+template <typename TriangleMesh, typename VPM>
+bool write_polylines(std::ostream& os, const TriangleMesh& tm, const Feature_lines<TriangleMesh>& lines, VPM vpm)
+{
+  Full_precision_guard guard(os);
+  for(const Feature_line<TriangleMesh>& line : lines.lines)
+  {
+    const bool repeat_first = line.is_closed && !line.points.empty();
+    os << line.points.size() + (repeat_first ? 1 : 0);
+    for(const Feature_point<TriangleMesh>& p : line.points)
+    {
+      os << ' ';
+      write_coordinates(os, p.point(tm, vpm));
+    }
+    if(repeat_first)
+    {
+      os << ' ';
+      write_coordinates(os, line.points.front().point(tm, vpm));
+    }
+    os << '\n';
+  }
+  return os.good();
+}
+
+template <typename TriangleMesh, typename VPM>
+bool write_OBJ_lines(std::ostream& os, const TriangleMesh& tm, const Feature_lines<TriangleMesh>& lines, VPM vpm)
+{
+  Full_precision_guard guard(os);
+  os << "# feature lines: " << lines.lines.size() << '\n';
+  std::size_t next_index = 1; // OBJ indices start at 1 and run over the whole file
+  for(std::size_t i = 0; i < lines.lines.size(); ++i)
+  {
+    const Feature_line<TriangleMesh>& line = lines.lines[i];
+    os << "o " << feature_line_type_name(line.type) << '_' << i << '\n';
+    for(const Feature_point<TriangleMesh>& p : line.points)
+    {
+      os << "v ";
+      write_coordinates(os, p.point(tm, vpm));
+      os << '\n';
+    }
+    if(line.points.size() >= 2)
+    {
+      os << 'l';
+      for(std::size_t k = 0; k < line.points.size(); ++k)
+        os << ' ' << next_index + k;
+      if(line.is_closed)
+        os << ' ' << next_index;
+      os << '\n';
+    }
+    next_index += line.points.size();
+  }
+  return os.good();
+}
+
 } // namespace internal
 
 /// \ingroup PkgFeatureSegmentationIO
@@ -82,33 +136,10 @@ inline const char* feature_line_type_name(Feature_line_type type)
 /// \return `true` if the stream is still good after writing
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-bool write_polylines(std::ostream& os, const TriangleMesh& tm,
-                     const Feature_lines<TriangleMesh>& lines,
+bool write_polylines(std::ostream& os, const TriangleMesh& tm, const Feature_lines<TriangleMesh>& lines,
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = internal::vertex_point_map(tm, np);
-
-  internal::Full_precision_guard guard(os);
-  for(const Feature_line<TriangleMesh>& line : lines.lines)
-  {
-    const bool repeat_first = line.is_closed && !line.points.empty();
-    os << line.points.size() + (repeat_first ? 1 : 0);
-    for(const Feature_point<TriangleMesh>& p : line.points)
-    {
-      os << ' ';
-      internal::write_coordinates(os, p.point(tm, vpm));
-    }
-    if(repeat_first)
-    {
-      os << ' ';
-      internal::write_coordinates(os, line.points.front().point(tm, vpm));
-    }
-    os << '\n';
-  }
-  return os.good();
+  return internal::write_polylines(os, tm, lines, internal::vertex_point_map(tm, np));
 }
 
 /// \ingroup PkgFeatureSegmentationIO
@@ -126,40 +157,10 @@ bool write_polylines(std::ostream& os, const TriangleMesh& tm,
 /// \return `true` if the stream is still good after writing
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-bool write_OBJ_lines(std::ostream& os, const TriangleMesh& tm,
-                     const Feature_lines<TriangleMesh>& lines,
+bool write_OBJ_lines(std::ostream& os, const TriangleMesh& tm, const Feature_lines<TriangleMesh>& lines,
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = internal::vertex_point_map(tm, np);
-
-  internal::Full_precision_guard guard(os);
-  os << "# feature lines: " << lines.lines.size() << '\n';
-  std::size_t next_index = 1; // OBJ indices start at 1 and run over the whole file
-  for(std::size_t i = 0; i < lines.lines.size(); ++i)
-  {
-    const Feature_line<TriangleMesh>& line = lines.lines[i];
-    os << "o " << internal::feature_line_type_name(line.type) << '_' << i << '\n';
-    for(const Feature_point<TriangleMesh>& p : line.points)
-    {
-      os << "v ";
-      internal::write_coordinates(os, p.point(tm, vpm));
-      os << '\n';
-    }
-    if(line.points.size() >= 2)
-    {
-      os << 'l';
-      for(std::size_t k = 0; k < line.points.size(); ++k)
-        os << ' ' << next_index + k;
-      if(line.is_closed)
-        os << ' ' << next_index;
-      os << '\n';
-    }
-    next_index += line.points.size();
-  }
-  return os.good();
+  return internal::write_OBJ_lines(os, tm, lines, internal::vertex_point_map(tm, np));
 }
 
 } // namespace Feature_segmentation

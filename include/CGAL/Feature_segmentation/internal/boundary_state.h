@@ -52,9 +52,7 @@ class Boundary_state
 {
 public:
   typedef boost::graph_traits<TriangleMesh> GTr;
-  typedef typename GTr::vertex_descriptor vertex_descriptor;
   typedef typename GTr::halfedge_descriptor halfedge_descriptor;
-  typedef typename GTr::face_descriptor face_descriptor;
   typedef Eigen::Vector3d Vec3;
   static constexpr std::size_t npos = std::size_t(-1);
 
@@ -101,7 +99,7 @@ public:
     ring_offset.assign(nv + 1, 0);
     for(std::size_t v = 0; v < nv; ++v)
     {
-      const vertex_descriptor vd = idx.vertex_at(v);
+      const auto vd = idx.vertex_at(v);
       std::vector<std::array<std::size_t, 3> > ring;
       if(halfedge(vd, tm) != GTr::null_halfedge())
         for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(vd, tm), tm))
@@ -355,8 +353,8 @@ public:
   }
 
   const TriangleMesh* m_tm;
-  std::vector<vertex_descriptor> vertex_list;
-  std::vector<face_descriptor> face_list;
+  std::vector<typename GTr::vertex_descriptor> vertex_list;
+  std::vector<typename GTr::face_descriptor> face_list;
   std::vector<halfedge_descriptor> edge_halfedge;
   std::vector<Vec3> points;
   std::vector<Triangle_metric> metrics;

@@ -33,11 +33,9 @@ template <typename TriangleMesh>
 class Edit_precomputation
 {
 public:
-  typedef boost::graph_traits<TriangleMesh> GTr;
-  typedef typename GTr::vertex_descriptor vertex_descriptor;
-  typedef typename GTr::halfedge_descriptor halfedge_descriptor;
-  typedef typename GTr::edge_descriptor edge_descriptor;
-  typedef typename GTr::face_descriptor face_descriptor;
+  typedef typename Mesh_indexing<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename Mesh_indexing<TriangleMesh>::edge_descriptor edge_descriptor;
+  typedef typename Mesh_indexing<TriangleMesh>::face_descriptor face_descriptor;
   typedef std::function<std::size_t(const Correlation_clustering_graph&, std::vector<std::size_t>&)> Solver;
 
   // Checks and indexes `tm`, cuts it along its creases, prepares the data on the working
@@ -126,7 +124,7 @@ public:
   Solver solver;
 
 private:
-  halfedge_descriptor working_halfedge_at(std::size_t id) const
+  auto working_halfedge_at(std::size_t id) const
   {
     const auto h = halfedge(data->idx.edge_at(id / 2), data->idx.mesh());
     return (id % 2 == 0) ? h : opposite(h, data->idx.mesh());

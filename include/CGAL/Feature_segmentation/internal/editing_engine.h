@@ -31,7 +31,6 @@ class Editing_engine
 {
 public:
   typedef Edit_precomputation<TriangleMesh> Precomputation;
-  typedef typename Precomputation::GTr GTr;
   typedef typename Precomputation::face_descriptor face_descriptor;
 
   template <typename NamedParameters>
@@ -219,7 +218,7 @@ public:
     const TriangleMesh& tm = idx.mesh();
     const std::vector<std::size_t>& labels = *s.labels;
     const auto h = halfedge(idx.face_at(f), tm);
-    const std::array<typename GTr::halfedge_descriptor, 3> hs = { h, next(h, tm), prev(h, tm) };
+    const std::array<decltype(h), 3> hs = { h, next(h, tm), prev(h, tm) };
     std::array<std::size_t, 3> l;
     std::array<Eigen::Vector3d, 3> p, edge_point;
     for(int k = 0; k < 3; ++k)

@@ -28,26 +28,31 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// Dihedral angle (degrees) below which two faces lie in one flat region: a CAD
-// tessellation makes the faces of a plane or of one ruling strip coplanar to rounding.
-constexpr double tangent_flat_angle = 0.5;
-// The least dihedral angle (degrees) of a discontinuity: the plane-to-fillet lines of
-// the 14 CAD parts of the evaluation mostly bend by 2 to 10 degrees (half the angle step
-// of the fillet's tessellation), while large nearly flat faces tessellated irregularly
-// (44647) carry bends of 0.5 to 1.5 degrees between their flat regions.
-constexpr double tangent_least_angle = 1.5;
-// A discontinuity: the flat side's mean curvature below this fraction of the other's.
-// Counted against the B-rep faces without the area condition below: at 0.2, 44647
-// gains 34 false discontinuities between irregular regions of a large, nearly flat
-// face, and 42811 eight; at 0.1 one is left, at the cost of most plane-to-fillet edges
-// of 44323 (20 of 184 kept). With the area condition the mean F of the parts is 0.938
-// at both (manual, Creases).
-constexpr double tangent_curvature_ratio = 0.1;
-// The least area of the flat side, as the square of this fraction of the bounding-box
-// diagonal: a single triangle or a few of a doubly curved tessellation have no curvature
-// of their own to compare (a length, so that a finer tessellation of the same shape
-// finds the same discontinuities).
-constexpr double tangent_least_flat_side = 0.02;
+// The thresholds of the rule (file comment), measured on the 14 CAD parts of the
+// evaluation (constants, not options).
+struct Tangent_thresholds
+{
+  // Dihedral angle (degrees) below which two faces lie in one flat region: a CAD
+  // tessellation makes the faces of a plane or of one ruling strip coplanar to rounding.
+  static constexpr double flat_angle = 0.5;
+  // The least dihedral angle (degrees) of a discontinuity: the plane-to-fillet lines of
+  // the parts mostly bend by 2 to 10 degrees (half the angle step of the fillet's
+  // tessellation), while large nearly flat faces tessellated irregularly (44647) carry
+  // bends of 0.5 to 1.5 degrees between their flat regions.
+  static constexpr double least_angle = 1.5;
+  // A discontinuity: the flat side's mean curvature below this fraction of the other's.
+  // Counted against the B-rep faces without the area condition below: at 0.2, 44647
+  // gains 34 false discontinuities between irregular regions of a large, nearly flat
+  // face, and 42811 eight; at 0.1 one is left, at the cost of most plane-to-fillet
+  // edges of 44323 (20 of 184 kept). With the area condition the mean F of the parts is
+  // 0.938 at both (manual, Creases).
+  static constexpr double curvature_ratio = 0.1;
+  // The least area of the flat side, as the square of this fraction of the bounding-box
+  // diagonal: a single triangle or a few of a doubly curved tessellation have no
+  // curvature of their own to compare (a length, so that a finer tessellation of the
+  // same shape finds the same discontinuities).
+  static constexpr double least_flat_side = 0.02;
+};
 
 // Marks with 2 in `is_crease` the non-crease edges of the mesh of `idx` that are
 // curvature discontinuities (file comment); `angle`: the dihedral angles (degrees) of
@@ -57,6 +62,7 @@ template <typename TriangleMesh, typename VPM>
 void mark_tangent_discontinuities(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
                                   const std::vector<double>& area, std::vector<char>& is_crease)
 {
+  typedef Tangent_thresholds Limits;
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
   std::vector<std::size_t> face0(ne, idx.npos), face1(ne, idx.npos);
@@ -76,7 +82,7 @@ void mark_tangent_discontinuities(const Mesh_indexing<TriangleMesh>& idx, VPM vp
     return x;
   };
   for(std::size_t e = 0; e < ne; ++e)
-    if(interior(e) && !is_crease[e] && angle[e] < tangent_flat_angle)
+    if(interior(e) && !is_crease[e] && angle[e] < Limits::flat_angle)
     {
       const std::size_t a = find(face0[e]), b = find(face1[e]);
       if(a < b) parent[b] = a; else if(b < a) parent[a] = b;
@@ -96,11 +102,11 @@ void mark_tangent_discontinuities(const Mesh_indexing<TriangleMesh>& idx, VPM vp
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  const double least_area = CGAL::square(tangent_least_flat_side * (hi - lo).norm());
+  const double least_area = CGAL::square(Limits::least_flat_side * (hi - lo).norm());
   std::vector<double> length(ne, 0.);
   for(std::size_t e = 0; e < ne; ++e)
   {
-    if(!interior(e) || is_crease[e] || angle[e] < tangent_flat_angle) continue;
+    if(!interior(e) || is_crease[e] || angle[e] < Limits::flat_angle) continue;
     const auto h = halfedge(idx.edge_at(e), tm);
     const auto& p = get(vpm, source(h, tm));
     const auto& q = get(vpm, target(h, tm));
@@ -111,11 +117,11 @@ void mark_tangent_discontinuities(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   }
   for(std::size_t e = 0; e < ne; ++e)
   {
-    if(!interior(e) || is_crease[e] || angle[e] < tangent_least_angle) continue;
+    if(!interior(e) || is_crease[e] || angle[e] < Limits::least_angle) continue;
     const std::size_t a = region[face0[e]], b = region[face1[e]];
     if(a == b || !(region_area[a] > 0) || !(region_area[b] > 0)) continue;
     const double ka = bend[a] / region_area[a], kb = bend[b] / region_area[b];
-    if((std::min)(ka, kb) < tangent_curvature_ratio * (std::max)(ka, kb) && region_area[ka < kb ? a : b] >= least_area)
+    if((std::min)(ka, kb) < Limits::curvature_ratio * (std::max)(ka, kb) && region_area[ka < kb ? a : b] >= least_area)
       is_crease[e] = 2;
   }
 }

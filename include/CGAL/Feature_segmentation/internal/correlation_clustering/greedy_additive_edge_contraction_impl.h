@@ -318,6 +318,16 @@ private:
   Cc_index m_time = 0;
 };
 
+// GAEC on `g`: fills `adj` (for a solver that goes on from the result on the same
+// adjacency) and `labels`, normalised; returns the number of clusters.
+inline std::size_t greedy_additive_edge_contraction(const Correlation_clustering_graph& g, Simple_adjacency& adj,
+                                                    std::vector<std::size_t>& labels)
+{
+  build_simple_adjacency(g, adj);
+  Greedy_additive_edge_contraction_impl().run(adj, labels);
+  return normalize_labels(labels);
+}
+
 } // namespace internal
 } // namespace Feature_segmentation
 } // namespace CGAL

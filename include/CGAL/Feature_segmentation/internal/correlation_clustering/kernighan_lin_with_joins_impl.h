@@ -437,6 +437,13 @@ private:
     m_moves.clear();
   }
 
+  // a move of a sequence: the node and the cluster it left
+  struct Move
+  {
+    Cc_index node;
+    Cc_index from;
+  };
+
   const Simple_adjacency* m_adj = nullptr;
   std::size_t m_number_of_iterations;
   double m_epsilon;
@@ -460,13 +467,9 @@ private:
   Lazy_max_heap m_heap;
   std::vector<Cc_index> m_candidates;
   std::vector<Cc_index> m_open;
-  struct Move
-  {
-    Cc_index node;
-    Cc_index from;
-  };
-  std::vector<Move> m_moves;
+  // the moves of the current sequence, and their gain so far
   double m_prefix_gain = 0.;
+  std::vector<Move> m_moves;
 };
 
 } // namespace internal
