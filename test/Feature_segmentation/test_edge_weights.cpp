@@ -144,8 +144,10 @@ BOOST_AUTO_TEST_CASE(degenerate_triangle_is_euclidean)
   BOOST_TEST(sim[ab] == 0.5 * (1. / 3 + std::sqrt(lambda2) / 3), boost::test_tools::tolerance(1e-12));
 }
 
-// On fandisk with alpha = 0.6: every non-feature edge is positive (w = Similarity); the
-// edges of strong crest lines are mostly negative.
+// On fandisk with alpha = 0.6 the edges of strong crest lines are mostly negative: their
+// Award outweighs the Similarity that the curvature across them shrinks. (That every
+// non-feature edge is positive follows from w = Similarity, a length, and is not tested:
+// the lengths themselves are, against hand computations, above.)
 BOOST_AUTO_TEST_CASE(fandisk_sign_pattern)
 {
   SM m;
@@ -154,10 +156,6 @@ BOOST_AUTO_TEST_CASE(fandisk_sign_pattern)
   FS::Feature_lines<SM> lines = FS::detect_feature_lines(m, feat);
   auto w = m.add_property_map<SM::Edge_index, double>("e:w").first;
   FS::compute_edge_weights(m, w, FS::parameters::feature_lines(lines).alpha(0.6));
-  std::size_t nonfeature = 0, positive = 0;
-  for(auto e : m.edges())
-    if(!feat[e]) { ++nonfeature; positive += (w[e] > 0); }
-  BOOST_TEST(positive == nonfeature);
   // salient: edges holding a point of a line of strength >= 10
   std::size_t salient = 0, negative = 0;
   for(const auto& l : lines.lines)
