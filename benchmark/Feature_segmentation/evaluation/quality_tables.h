@@ -87,7 +87,7 @@ inline void write_outputs(const std::string& out_folder, const std::vector<Row>&
      << "the best of the sweep (alpha 0.4-1.2, angle 10-90) by boundary F-score with a ground truth, else by the "
      << "harmonic mean of coverage and 1 - redundancy. \"smoothed\": the same segmentation with its boundaries "
      << "smoothed (smooth_patch_boundaries, 20 iterations at most) and every face given the patch covering most of "
-     << "its area (majority_face_patches); without it, a face has the patch of the majority of its vertices. Every "
+     << "its area (majority_face_patches); without it, the same rule under the unsmoothed boundaries (the face_patch_map of segment_along_features). Every "
      << "score is computed on the face patches (the boundary is the chain of mesh edges between faces of different "
      << "patches), except the cut cost (on the vertex patches) and the curve columns, computed on the smoothed curves "
      << "themselves (their segments cross the triangles).\n\n";
