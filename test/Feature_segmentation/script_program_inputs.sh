@@ -28,26 +28,8 @@ check "quad mesh: segmentation.ply has the 10 triangles" \
 # point no face uses (point 9) and a duplicate of face 0 with the other orientation
 # (face 5). The mesh has 8 vertices and 10 triangles; the patch files have the file's 10
 # vertices and 6 faces. alpha 2 splits the box (measured: 2 patches).
-cat > "$work/box_duplicates.off" <<'END_OF_MESH'
-OFF
-10 6 0
-0 0 0
-1 0 0
-1 1 0
-0 1 0
-0 0 1
-1 0 1
-1 1 1
-0 1 1
-1 1 0
-5 5 5
-4 0 3 2 1
-4 0 1 5 4
-4 1 8 6 5
-4 2 3 7 6
-4 3 0 4 7
-4 1 2 3 0
-END_OF_MESH
+{ echo OFF; echo '10 6 0'; sed -n 3,10p "$work/box.off"; printf '1 1 0\n5 5 5\n'
+  sed -n 11,15p "$work/box.off" | sed '3s/.*/4 1 8 6 5/'; echo '4 1 2 3 0'; } > "$work/box_duplicates.off"
 run duplicates "$work/box_duplicates.off" --output-dir "$work/duplicates" --alpha 2
 check "duplicates: exit status 0 (stderr: $(tail -n 1 "$work/duplicates.err"))" [ "$rc" -eq 0 ]
 check "duplicates: notice about the removed vertices" \

@@ -38,6 +38,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Feature_segmentation/parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <algorithm>
@@ -68,10 +69,7 @@ constexpr double default_significant_overlap = 0.1;
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double bounding_box_diagonal(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::Feature_segmentation::internal::vertex_point_map(tm, np);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   bool first = true;
   for(auto v : vertices(tm))
@@ -220,12 +218,9 @@ Boundary_scores compare_boundaries(const TriangleMesh& tm, FacePatchMap face_pat
                                    ReferenceFacePatchMap reference_face_patch, double tolerance,
                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   if(!(tolerance >= 0) || !std::isfinite(tolerance))
     throw Invalid_input("the boundary tolerance must be a finite number >= 0 (got " + std::to_string(tolerance) + ")");
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::Feature_segmentation::internal::vertex_point_map(tm, np);
   return internal::compare_boundary_segments(internal::patch_boundary_segments(tm, face_patch, vpm),
                                              internal::patch_boundary_segments(tm, reference_face_patch, vpm),
                                              tolerance);
@@ -260,13 +255,10 @@ Boundary_scores compare_boundaries(const Patch_boundaries<TriangleMesh>& boundar
                                    ReferenceFacePatchMap reference_face_patch, double tolerance,
                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   if(!(tolerance >= 0) || !std::isfinite(tolerance))
     throw Invalid_input("the boundary tolerance must be a finite number >= 0 (got " + std::to_string(tolerance) + ")");
   const TriangleMesh& tm = boundaries.mesh();
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::Feature_segmentation::internal::vertex_point_map(tm, np);
   return internal::compare_boundary_segments(internal::boundary_curve_segments(boundaries),
                                              internal::patch_boundary_segments(tm, reference_face_patch, vpm),
                                              tolerance);
@@ -380,10 +372,7 @@ Partition_scores compare_partitions(const TriangleMesh& tm, FacePatchMap face_pa
                                     double significant_overlap = default_significant_overlap,
                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::Feature_segmentation::internal::vertex_point_map(tm, np);
   typedef typename boost::property_traits<FacePatchMap>::value_type Id;
   typedef typename boost::property_traits<ReferenceFacePatchMap>::value_type Reference_id;
   std::vector<Id> a;

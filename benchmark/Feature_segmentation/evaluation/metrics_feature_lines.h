@@ -17,6 +17,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Feature_segmentation/parameters.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <cmath>
@@ -107,10 +108,7 @@ Feature_line_scores compare_with_feature_lines(const TriangleMesh& tm, FacePatch
                                                double strong_strength = default_strong_feature_strength,
                                                const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::Feature_segmentation::internal::vertex_point_map(tm, np);
   return internal::compare_segments_with_feature_lines(internal::patch_boundary_segments(tm, face_patch, vpm), tm,
                                                        vpm, lines, tolerance, strong_strength);
 }
@@ -137,11 +135,8 @@ Feature_line_scores compare_with_feature_lines(const Patch_boundaries<TriangleMe
                                                double strong_strength = default_strong_feature_strength,
                                                const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   const TriangleMesh& tm = boundaries.mesh();
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::Feature_segmentation::internal::vertex_point_map(tm, np);
   return internal::compare_segments_with_feature_lines(internal::boundary_curve_segments(boundaries), tm, vpm, lines,
                                                        tolerance, strong_strength);
 }
