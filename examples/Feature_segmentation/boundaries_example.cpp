@@ -48,7 +48,7 @@ int main(int argc, char* argv[])
   segmentation.face_patches(boundaries, face_patch);
   std::size_t moved = 0;
   for(Mesh::Face_index f : faces(mesh)) moved += (get(face_patch, f) != segmentation.patch(f));
-  std::cout << moved << " faces take another patch than the majority of their vertices" << std::endl;
+  std::cout << moved << " faces take another patch than before smoothing" << std::endl;
 
   // (b) a refined mesh whose edges follow the boundaries, with exact face patches
   Mesh refined;
