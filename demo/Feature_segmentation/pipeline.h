@@ -375,7 +375,7 @@ public:
     });
     // Written last, so that it holds the time of every stage.
     write_file(dir / "summary.json",
-               [&](std::ostream& os) { write_summary(os, options, results, timer.seconds()); });
+               [&](std::ostream& os) { write_summary(os, options, results, timer.seconds(), timer.peak_mib()); });
   }
 
   Mesh mesh;                                   ///< the input, repaired and triangulated

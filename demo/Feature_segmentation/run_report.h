@@ -7,6 +7,7 @@
 #define CGAL_FEATURE_SEGMENTATION_DEMO_RUN_REPORT_H
 
 #include "edit_runner.h"
+#include "peak_memory.h"
 #include "program_options.h"
 #include "read_input_mesh.h"
 
@@ -41,13 +42,18 @@ public:
   {
     if(!m_quiet)
       std::cerr << "progress: " << name << " ..." << std::endl;
+    reset_peak_resident();
     const auto start = std::chrono::steady_clock::now();
     auto finish = [&]() {
       const std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
-      // a stage run again (the editor saves more than once) keeps its place, new time
+      // a stage run again (the editor saves more than once) keeps its place, new figures
       auto it = std::find_if(m_seconds.begin(), m_seconds.end(), [&](const auto& s) { return s.first == name; });
       if(it != m_seconds.end()) it->second = d.count();
       else m_seconds.emplace_back(name, d.count());
+      const double peak = peak_resident_mib();
+      auto pm = std::find_if(m_peak_mib.begin(), m_peak_mib.end(), [&](const auto& s) { return s.first == name; });
+      if(pm != m_peak_mib.end()) pm->second = peak;
+      else m_peak_mib.emplace_back(name, peak);
       if(!m_quiet)
         std::cerr << "progress: " << name << " done in " << std::fixed << std::setprecision(3)
                   << d.count() << " s" << std::defaultfloat << std::endl;
@@ -66,6 +72,8 @@ public:
   }
 
   const std::vector<std::pair<std::string, double> >& seconds() const { return m_seconds; }
+  /// The peak resident memory of each stage, MiB (-1 where unknown).
+  const std::vector<std::pair<std::string, double> >& peak_mib() const { return m_peak_mib; }
 
   /// The last time of stage `name` (0 if it never ran).
   double seconds_of(const std::string& name) const
@@ -78,6 +86,7 @@ public:
 private:
   bool m_quiet;
   std::vector<std::pair<std::string, double> > m_seconds;
+  std::vector<std::pair<std::string, double> > m_peak_mib;
 };
 
 // The solver chosen with --solver, timed on its own: the segmentation stage also builds
@@ -143,8 +152,11 @@ struct Results
   std::size_t number_of_split_faces = 0;
 };
 
+// `peak_mib`: the peak resident memory of each stage (the write's without this summary,
+// written last), "peak_memory_mib" in the summary.
 inline void write_summary(std::ostream& os, const Options& options, const Results& r,
-                          const std::vector<std::pair<std::string, double> >& seconds)
+                          const std::vector<std::pair<std::string, double> >& seconds,
+                          const std::vector<std::pair<std::string, double> >& peak_mib = {})
 {
   typedef nlohmann::ordered_json Json;
   auto text_or_null = [](const std::string& s) { return s.empty() ? Json(nullptr) : Json(s); };
@@ -169,6 +181,9 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
     total += s.second;
   }
   stages["total"] = total;
+  Json peaks = Json::object();
+  for(const auto& s : peak_mib)
+    if(s.second >= 0) peaks[s.first] = s.second;
   const Json summary{
     {"program", program_name},
     {"input", options.input},
@@ -232,7 +247,8 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
       {"refined_vertices", r.number_of_refined_vertices},
       {"refined_faces", r.number_of_refined_faces},
       {"split_faces", r.number_of_split_faces}}},
-    {"seconds", stages}};
+    {"seconds", stages},
+    {"peak_memory_mib", peaks}};
   os << summary.dump(2) << '\n';
 }
 

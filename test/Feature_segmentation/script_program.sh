@@ -55,6 +55,15 @@ check "fandisk: feature edges <= edges" [ "${fedges:-0}" -le "$e" ]
 for stage in load segmentation total; do
   check "fandisk: seconds.$stage in summary" [ -n "$(json_get "$summary" seconds "$stage")" ]
 done
+# the peak resident memory of each stage (Linux): at least the program's own pages and
+# the mesh, so more than 1 MiB
+if [ -r /proc/self/status ]; then
+  for stage in load segmentation write; do
+    peak="$(json_get "$summary" peak_memory_mib $stage)"
+    check "fandisk: peak_memory_mib.$stage ($peak) above 1 MiB" \
+      python3 -c "import sys; sys.exit(0 if float('${peak:-0}') > 1 else 1)"
+  done
+fi
 lines="$(wc -l < "$out/feature_lines.polylines.txt")"
 check "fandisk: polylines lines ($lines) = feature lines in summary ($total)" [ "$lines" -eq "$total" ]
 check "fandisk: polylines file well-formed" polylines_well_formed "$out/feature_lines.polylines.txt"
