@@ -377,8 +377,8 @@ check "box --edits: the two undos take back lines 2 then 1" \
 check "box --edits: back to the automatic patches after undoing everything" \
   [ "$(edit 4 patches)" = "$(json_int "$es" segmentation automatic_patches)" ]
 
-# 65 alpha edits then 65 undos: the history's 65 earlier states of fandisk take some
-# 15 MiB, within the default 256 MiB, so they undo every edit (with --undo-memory 0 the
+# 65 alpha edits then 65 undos: 65 earlier states of fandisk (8 bytes per edge and
+# per vertex each) fit in the default 256 MiB, so they undo every edit (with --undo-memory 0 the
 # second undo fails: script_program_inputs.sh).
 { for i in $(seq 1 65); do echo "alpha 0.$((6 + i % 2))"; done; for i in $(seq 1 65); do echo undo; done; } > "$work/undo64.edits"
 run undo64 "$fandisk" --output-dir "$work/undo64" $crest --edits "$work/undo64.edits" --quiet
