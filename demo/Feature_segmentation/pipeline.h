@@ -200,6 +200,7 @@ public:
                 << " user; " << results.number_of_crease_edges << " crease edges; "
                 << results.number_of_feature_edges << " feature edges" << std::endl;
     results.solver_seconds = last_solver_seconds;
+    results.segmentation_stages = segmentation->stage_times();
     results.number_of_automatic_patches = results.number_of_patches = segmentation->number_of_patches();
     results.automatic_cut_cost = results.cut_cost = segmentation->cut_cost();
     results.number_of_oversegments = segmentation->number_of_oversegments();

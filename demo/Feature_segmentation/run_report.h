@@ -16,6 +16,7 @@
 #include <CGAL/Feature_segmentation/Kernighan_lin_with_joins.h>
 #include <CGAL/Feature_segmentation/Solver_sequence.h>
 #include <CGAL/Feature_segmentation/crest_lines.h>
+#include <CGAL/Feature_segmentation/internal/stage_times.h>
 
 #include <nlohmann/json.hpp>
 
@@ -138,6 +139,7 @@ struct Results
   double automatic_cut_cost = 0;           // before the edits
   std::size_t number_of_oversegments = 0;
   double solver_seconds = 0;               // of the automatic segmentation
+  FS::internal::Stage_times segmentation_stages; // the seconds inside the stage "segmentation"
   std::vector<fs_demo::Edit_record> edits;
   // The boundaries and their smoothing.
   std::size_t number_of_curves = 0;
@@ -232,7 +234,17 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
       {"automatic_patches", r.number_of_automatic_patches},
       {"automatic_cut_cost", r.automatic_cut_cost},
       {"oversegments", r.number_of_oversegments},
-      {"solver_seconds", r.solver_seconds}}},
+      {"solver_seconds", r.solver_seconds},
+      {"stage_seconds",
+       {{"mesh_check_and_indexing", r.segmentation_stages.mesh_check_and_indexing},
+        {"creases", r.segmentation_stages.creases},
+        {"curvature", r.segmentation_stages.curvature},
+        {"feature_lines", r.segmentation_stages.feature_lines},
+        {"weight_terms", r.segmentation_stages.weight_terms},
+        {"oversegmentation", r.segmentation_stages.oversegmentation},
+        {"graph", r.segmentation_stages.graph},
+        {"solve", r.segmentation_stages.solve},
+        {"labels", r.segmentation_stages.labels}}}}},
     {"edits", edits},
     {"boundaries",
      {{"curves", r.number_of_curves},

@@ -22,6 +22,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -46,6 +48,420 @@ constexpr double crease_gap_radius = 0.05;
 // (0.035 and more at 0.1% of the diagonal) are read on the filtered angles.
 constexpr double crease_gap_raw_roughness = 0.03;
 
+// The lengths one ball of the gap test holds: of the edges bending by crease_angle or
+// more, and of those in the band below.
+struct Gap_lengths
+{
+  double crease = 0, band = 0;
+};
+
+// The search behind the gap test. The ball of a candidate holds a fixed share of the
+// surface, so a search face by face costs the faces of the ball, which grow with the
+// resolution (every candidate of a 5M-face part visited some 10^5 faces). The faces are
+// therefore grouped into a hierarchy of connected clusters (about 16 faces, then 8
+// clusters per level), each with a bounding sphere, the lengths of the edges it owns
+// (an edge belongs to the cluster of the face of its halfedge) and the faces across its
+// border. A cluster whose sphere lies inside the ball is reached whole once one of its
+// faces is: its lengths are added at once and the search goes on from its border;
+// face by face only in the clusters the ball's sphere cuts. The lengths are those of
+// the face-by-face search (`levels` 0) up to the order of the additions: a cluster with
+// a zero-length edge, which the face search does not cross, is never taken whole.
+template <typename TriangleMesh, typename VPM>
+class Crease_gap_search
+{
+  typedef std::uint32_t Index;
+  static constexpr Index none = Index(-1);
+
+  struct Level
+  {
+    std::vector<Index> parent;                   // per child (a face, or a cluster of the level below)
+    std::vector<Eigen::Vector3d> center;         // per cluster: its bounding sphere
+    std::vector<double> radius;
+    std::vector<Gap_lengths> lengths;            // of the edges it owns
+    std::vector<char> has_zero_length_edge;
+    std::vector<std::size_t> border_begin;       // CSR over `border`
+    std::vector<std::array<Index, 2> > border;   // (face outside, edge) pairs, by neighbour
+    std::vector<std::size_t> group_begin;        // CSR over `groups`
+    std::vector<std::pair<Index, std::size_t> > groups; // (neighbour, its first pair in `border`)
+  };
+
+public:
+  // `max_levels` 0: the search face by face.
+  Crease_gap_search(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
+                    const std::vector<double>& band_angle, double crease_angle, int max_levels = 8)
+    : m_idx(idx), m_angle(angle), m_band_angle(band_angle), m_crease_angle(crease_angle)
+  {
+    const TriangleMesh& tm = idx.mesh();
+    const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
+    m_end0.resize(ne);
+    m_end1.resize(ne);
+    m_owner.assign(ne, none);
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+    double mean_edge = 0;
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      const auto h = halfedge(idx.edge_at(e), tm);
+      const auto& p = get(vpm, source(h, tm));
+      const auto& q = get(vpm, target(h, tm));
+      m_end0[e] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      m_end1[e] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+      lo = lo.cwiseMin(m_end0[e]).cwiseMin(m_end1[e]);
+      hi = hi.cwiseMax(m_end0[e]).cwiseMax(m_end1[e]);
+      mean_edge += (m_end1[e] - m_end0[e]).norm();
+      std::size_t f = idx.face_id(h);
+      if(f == idx.npos) f = idx.face_id(opposite(h, tm));
+      if(f != idx.npos) m_owner[e] = Index(f);
+    }
+    mean_edge /= double((std::max)(ne, std::size_t(1)));
+    // on a coarse mesh the ball must still reach the candidate's neighbours
+    m_radius = (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
+    m_adj.resize(nf);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+      {
+        const std::size_t g = idx.face_id(opposite(h, tm));
+        m_adj[f][k] = { g == idx.npos ? none : Index(g), Index(idx.edge_id(h)) };
+        if(++k == 3) break;
+      }
+    }
+    build_levels(max_levels);
+  }
+
+  double radius() const { return m_radius; }
+  std::size_t number_of_levels() const { return m_levels.size(); }
+
+  // A thread's stamps and queue.
+  struct Work_space
+  {
+    std::vector<std::size_t> face_stamp, edge_stamp, queue;
+    std::vector<std::vector<std::size_t> > inside_stamp, done_stamp; // per level, per cluster
+    std::vector<std::vector<char> > inside;
+  };
+
+  // The lengths in the ball of the search numbered `stamp` (distinct per call with one
+  // work space) around the midpoint of edge `e`, from its faces.
+  Gap_lengths lengths(std::size_t e, std::size_t stamp, Work_space& ws) const
+  {
+    prepare(ws);
+    const TriangleMesh& tm = m_idx.mesh();
+    const Eigen::Vector3d c = 0.5 * (m_end0[e] + m_end1[e]);
+    const double r_whole = m_radius * (1 - 1e-9); // a cluster inside this radius is inside the ball
+    const std::size_t nl = m_levels.size();
+    // whether cluster x of level l lies inside the ball, once per search
+    auto inside = [&](std::size_t l, Index x) {
+      if(ws.inside_stamp[l][x] != stamp)
+      {
+        ws.inside_stamp[l][x] = stamp;
+        const Level& L = m_levels[l];
+        ws.inside[l][x] = !L.has_zero_length_edge[x] && (L.center[x] - c).norm() + L.radius[x] <= r_whole;
+      }
+      return ws.inside[l][x] != 0;
+    };
+    // the highest level of a cluster that holds face f and lies inside the ball, its
+    // cluster in `cluster`; -1: none
+    auto whole = [&](Index f, Index& cluster) {
+      std::array<Index, 16> chain;
+      Index x = f;
+      for(std::size_t l = 0; l < nl; ++l) chain[l] = x = m_levels[l].parent[x];
+      for(std::size_t l = nl; l-- > 0;)
+        if(inside(l, chain[l])) { cluster = chain[l]; return int(l); }
+      return -1;
+    };
+    Gap_lengths sum;
+    ws.queue.clear();
+    const auto h = halfedge(m_idx.edge_at(e), tm);
+    for(std::size_t f : { m_idx.face_id(h), m_idx.face_id(opposite(h, tm)) })
+      if(f != m_idx.npos && ws.face_stamp[f] != stamp) { ws.face_stamp[f] = stamp; ws.queue.push_back(f); }
+    for(std::size_t j = 0; j < ws.queue.size(); ++j)
+    {
+      const Index x = Index(ws.queue[j]);
+      Index cluster = none;
+      const int l = whole(x, cluster);
+      if(l >= 0)
+      {
+        if(ws.done_stamp[l][cluster] == stamp) continue;
+        ws.done_stamp[l][cluster] = stamp;
+        const Level& L = m_levels[l];
+        sum.crease += L.lengths[cluster].crease;
+        sum.band += L.lengths[cluster].band;
+        for(std::size_t g = L.group_begin[cluster]; g < L.group_begin[cluster + 1]; ++g)
+        {
+          const std::size_t first = L.groups[g].second,
+                            last = g + 1 < L.group_begin[cluster + 1] ? L.groups[g + 1].second : L.border_begin[cluster + 1];
+          // a neighbour inside the ball is reached whole through any of the pairs (the
+          // edges between two clusters inside the ball are inside and of nonzero length)
+          if(inside(l, L.groups[g].first))
+          {
+            const Index y = L.border[first][0];
+            Index whole_cluster = none;
+            const int k = whole(y, whole_cluster);
+            if(ws.face_stamp[y] == stamp || ws.done_stamp[k][whole_cluster] == stamp) continue;
+            ws.face_stamp[y] = stamp;
+            ws.queue.push_back(y);
+            continue;
+          }
+          for(std::size_t i = first; i < last; ++i)
+          {
+            const Index y = L.border[i][0];
+            if(ws.face_stamp[y] == stamp || length_inside(L.border[i][1], c) <= 0) continue;
+            ws.face_stamp[y] = stamp;
+            ws.queue.push_back(y);
+          }
+        }
+        continue;
+      }
+      for(const auto& a : m_adj[x])
+      {
+        const Index y = a[0], ye = a[1];
+        if(ws.edge_stamp[ye] == stamp) continue; // seen from its other face
+        ws.edge_stamp[ye] = stamp;
+        const double in = length_inside(ye, c);
+        if(in <= 0) continue;
+        Index owner_cluster;
+        // counted here unless its cluster is taken whole (most edges count for nothing)
+        if(counts(ye) && whole(m_owner[ye], owner_cluster) < 0) add(ye, in, sum);
+        if(y == none || ws.face_stamp[y] == stamp) continue;
+        ws.face_stamp[y] = stamp;
+        ws.queue.push_back(y);
+      }
+    }
+    return sum;
+  }
+
+private:
+  // The length of the part of edge x inside the ball around c: lengths of curves within
+  // a ball, the same on a mesh and on its flat subdivision.
+  double length_inside(std::size_t x, const Eigen::Vector3d& c) const
+  {
+    const Eigen::Vector3d d = m_end1[x] - m_end0[x], m = m_end0[x] - c;
+    const double a = d.squaredNorm(), b = m.dot(d), k = m.squaredNorm() - m_radius * m_radius;
+    const double disc = b * b - a * k;
+    if(a == 0 || disc <= 0) return 0.;
+    const double root = std::sqrt(disc);
+    const double t0 = (std::max)(0., (-b - root) / a), t1 = (std::min)(1., (-b + root) / a);
+    return t1 > t0 ? (t1 - t0) * std::sqrt(a) : 0.;
+  }
+
+  bool counts(std::size_t x) const
+  {
+    return m_angle[x] >= m_crease_angle || m_band_angle[x] >= crease_gap_band * m_crease_angle;
+  }
+
+  void add(std::size_t x, double length, Gap_lengths& sum) const
+  {
+    if(m_angle[x] >= m_crease_angle) sum.crease += length;
+    else if(m_band_angle[x] >= crease_gap_band * m_crease_angle) sum.band += length;
+  }
+
+  void prepare(Work_space& ws) const
+  {
+    if(ws.face_stamp.size() == m_adj.size()) return;
+    ws.face_stamp.assign(m_adj.size(), std::size_t(-1));
+    ws.edge_stamp.assign(m_end0.size(), std::size_t(-1));
+    ws.inside_stamp.resize(m_levels.size());
+    ws.done_stamp.resize(m_levels.size());
+    ws.inside.resize(m_levels.size());
+    for(std::size_t l = 0; l < m_levels.size(); ++l)
+    {
+      ws.inside_stamp[l].assign(m_levels[l].radius.size(), std::size_t(-1));
+      ws.done_stamp[l].assign(m_levels[l].radius.size(), std::size_t(-1));
+      ws.inside[l].assign(m_levels[l].radius.size(), 0);
+    }
+  }
+
+  // Groups the n children into connected clusters of about `size`, grown breadth first
+  // from the first child not yet grouped (neighbours(child, out) lists a child's
+  // neighbours); a cluster left under half the size (the growth ran out of children
+  // around it) joins a neighbouring cluster. Returns the number of clusters.
+  template <typename Neighbours>
+  static std::size_t grow_clusters(std::size_t n, std::size_t size, Neighbours neighbours, std::vector<Index>& parent)
+  {
+    parent.assign(n, none);
+    std::vector<Index> queue, around, first(1, 0); // first: the offsets of the clusters in `order`
+    std::vector<Index> order;                       // the children, cluster by cluster
+    order.reserve(n);
+    for(std::size_t seed = 0; seed < n; ++seed)
+    {
+      if(parent[seed] != none) continue;
+      const Index cluster = Index(first.size() - 1);
+      queue.assign(1, Index(seed));
+      parent[seed] = cluster;
+      for(std::size_t j = 0; j < queue.size() && queue.size() < size; ++j)
+      {
+        around.clear();
+        neighbours(queue[j], around);
+        for(Index y : around)
+          if(y != none && parent[y] == none && queue.size() < size) { parent[y] = cluster; queue.push_back(y); }
+      }
+      order.insert(order.end(), queue.begin(), queue.end());
+      first.push_back(Index(order.size()));
+    }
+    // the small clusters join a neighbour (union-find over the clusters, the root the
+    // cluster joined), then the roots are numbered in order
+    const std::size_t m = first.size() - 1;
+    std::vector<Index> root(m);
+    for(std::size_t c = 0; c < m; ++c) root[c] = Index(c);
+    auto find = [&](Index c) { while(root[c] != c) c = root[c] = root[root[c]]; return c; };
+    for(std::size_t c = 0; c < m; ++c)
+    {
+      if(2 * (first[c + 1] - first[c]) >= size) continue;
+      for(std::size_t i = first[c]; i < first[c + 1] && root[c] == Index(c); ++i)
+      {
+        around.clear();
+        neighbours(order[i], around);
+        for(Index y : around)
+          if(y != none && find(parent[y]) != find(Index(c))) { root[find(Index(c))] = find(parent[y]); break; }
+      }
+    }
+    std::vector<Index> number(m, none);
+    Index clusters = 0;
+    for(std::size_t c = 0; c < m; ++c)
+      if(find(Index(c)) == Index(c)) number[c] = clusters++;
+    for(std::size_t x = 0; x < n; ++x) parent[x] = number[find(parent[x])];
+    return clusters;
+  }
+
+  void build_levels(int max_levels)
+  {
+    const std::size_t nf = m_adj.size();
+    std::vector<Index> face_cluster(nf); // the cluster of each face at the last level built
+    for(std::size_t f = 0; f < nf; ++f) face_cluster[f] = Index(f);
+    std::size_t children = nf;
+    for(int level = 0; level < max_levels && level < 16 && children > 1; ++level)
+    {
+      Level L;
+      const Level* below = level == 0 ? nullptr : &m_levels.back();
+      const std::size_t n = level == 0
+        ? grow_clusters(nf, 16, [&](Index f, std::vector<Index>& out) {
+            for(const auto& a : m_adj[f]) out.push_back(a[0]);
+          }, L.parent)
+        : grow_clusters(children, 8, [&](Index x, std::vector<Index>& out) {
+            for(std::size_t i = below->border_begin[x]; i < below->border_begin[x + 1]; ++i)
+              out.push_back(face_cluster[below->border[i][0]]);
+          }, L.parent);
+      if(level > 0 && n > children / 2) break; // no longer coarsening
+      // the children's clusters, and the faces'
+      std::vector<std::vector<Index> > members(n);
+      for(std::size_t x = 0; x < children; ++x) members[L.parent[x]].push_back(Index(x));
+      std::vector<Index> next_face_cluster(nf);
+      for(std::size_t f = 0; f < nf; ++f) next_face_cluster[f] = L.parent[face_cluster[f]];
+      L.center.resize(n);
+      L.radius.assign(n, 0.);
+      L.lengths.assign(n, Gap_lengths());
+      L.has_zero_length_edge.assign(n, 0);
+      L.border_begin.assign(n + 1, 0);
+      L.group_begin.assign(n + 1, 0);
+      if(level == 0)
+        for(std::size_t e = 0; e < m_owner.size(); ++e)
+        {
+          if(m_owner[e] == none) continue;
+          const Index x = L.parent[m_owner[e]];
+          const double length = (m_end1[e] - m_end0[e]).norm();
+          if(length == 0) L.has_zero_length_edge[x] = 1;
+          add(e, length, L.lengths[x]);
+        }
+      for(std::size_t x = 0; x < n; ++x)
+      {
+        // the sphere: the centre of the children's box, a radius over all of them
+        Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+        auto corners = [&](auto visit) {
+          for(Index child : members[x])
+            if(level == 0)
+              for(const auto& a : m_adj[child]) { visit(m_end0[a[1]], 0.); visit(m_end1[a[1]], 0.); }
+            else
+              visit(below->center[child], below->radius[child]);
+        };
+        corners([&](const Eigen::Vector3d& p, double rho) {
+          lo = lo.cwiseMin(p - Eigen::Vector3d::Constant(rho));
+          hi = hi.cwiseMax(p + Eigen::Vector3d::Constant(rho));
+        });
+        L.center[x] = 0.5 * (lo + hi);
+        corners([&](const Eigen::Vector3d& p, double rho) {
+          L.radius[x] = (std::max)(L.radius[x], (p - L.center[x]).norm() + rho);
+        });
+        if(level > 0)
+          for(Index child : members[x])
+          {
+            L.lengths[x].crease += below->lengths[child].crease;
+            L.lengths[x].band += below->lengths[child].band;
+            if(below->has_zero_length_edge[child]) L.has_zero_length_edge[x] = 1;
+          }
+        // the border: the children's pairs that leave the cluster
+        for(Index child : members[x])
+        {
+          if(level == 0)
+          {
+            for(const auto& a : m_adj[child])
+              if(a[0] != none && next_face_cluster[a[0]] != Index(x)) L.border.push_back(a);
+          }
+          else
+            for(std::size_t i = below->border_begin[child]; i < below->border_begin[child + 1]; ++i)
+              if(next_face_cluster[below->border[i][0]] != Index(x)) L.border.push_back(below->border[i]);
+        }
+        L.border_begin[x + 1] = L.border.size();
+        // grouped by the neighbouring cluster
+        const auto first = L.border.begin() + std::ptrdiff_t(L.border_begin[x]);
+        std::stable_sort(first, L.border.end(), [&](const std::array<Index, 2>& a, const std::array<Index, 2>& b) {
+          return next_face_cluster[a[0]] < next_face_cluster[b[0]];
+        });
+        for(std::size_t i = L.border_begin[x]; i < L.border.size(); ++i)
+          if(i == L.border_begin[x] || next_face_cluster[L.border[i][0]] != next_face_cluster[L.border[i - 1][0]])
+            L.groups.emplace_back(next_face_cluster[L.border[i][0]], i);
+        L.group_begin[x + 1] = L.groups.size();
+      }
+      // a level none of whose clusters fits in a ball is never taken whole, nor those above
+      if(*std::min_element(L.radius.begin(), L.radius.end()) >= m_radius) break;
+      m_levels.push_back(std::move(L));
+      face_cluster.swap(next_face_cluster);
+      children = n;
+    }
+  }
+
+  const Mesh_indexing<TriangleMesh>& m_idx;
+  const std::vector<double>& m_angle;
+  const std::vector<double>& m_band_angle;
+  double m_crease_angle;
+  double m_radius = 0;
+  std::vector<Eigen::Vector3d> m_end0, m_end1;      // per edge: its ends
+  std::vector<Index> m_owner;                       // per edge: the face it belongs to
+  std::vector<std::array<std::array<Index, 2>, 3> > m_adj; // per face: (face across, edge) per side
+  std::vector<Level> m_levels;
+};
+
+// The gap test's lengths for every edge of `candidates` (by TBB's threads if
+// `parallel`, with the same result at any count); `max_levels` as Crease_gap_search's.
+template <typename TriangleMesh, typename VPM>
+std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
+                                            const std::vector<double>& angle, const std::vector<double>& band_angle,
+                                            double crease_angle, const std::vector<std::size_t>& candidates,
+                                            bool parallel = false, int max_levels = 8)
+{
+  std::vector<Gap_lengths> out(candidates.size());
+  if(candidates.empty()) return out;
+  typedef Crease_gap_search<TriangleMesh, VPM> Search;
+  const Search search(idx, vpm, angle, band_angle, crease_angle, max_levels);
+  auto run = [&](std::size_t first, std::size_t last, typename Search::Work_space& ws) {
+    for(std::size_t i = first; i < last; ++i) out[i] = search.lengths(candidates[i], i, ws);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel)
+  {
+    tbb::enumerable_thread_specific<typename Search::Work_space> spaces;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& b) { run(b.begin(), b.end(), spaces.local()); });
+  }
+  else
+#endif
+  {
+    (void)parallel;
+    typename Search::Work_space ws;
+    run(0, candidates.size(), ws);
+  }
+  return out;
+}
+
 // Drops the candidates (is_crease, from `angle`) that fail the gap test; `raw` are the
 // dihedral angles of the unfiltered normals, `raw_roughness` their roughness. Each
 // candidate's test reads the angles only, never is_crease, so the candidates are tested
@@ -55,110 +471,14 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
                            const std::vector<double>& raw, double raw_roughness, double crease_angle,
                            std::vector<char>& is_crease, bool parallel = false)
 {
-  const TriangleMesh& tm = idx.mesh();
-  const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
-  if(ne == 0) return;
-  const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
-  std::vector<Eigen::Vector3d> end0(ne), end1(ne);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-  double mean_edge = 0;
-  for(std::size_t e = 0; e < ne; ++e)
-  {
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const auto& p = get(vpm, source(h, tm));
-    const auto& q = get(vpm, target(h, tm));
-    end0[e] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    end1[e] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    lo = lo.cwiseMin(end0[e]).cwiseMin(end1[e]);
-    hi = hi.cwiseMax(end0[e]).cwiseMax(end1[e]);
-    mean_edge += (end1[e] - end0[e]).norm();
-  }
-  mean_edge /= double(ne);
-  // on a coarse mesh the ball must still reach the candidate's neighbours
-  const double r = (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
-  // The length of the part of edge x inside the ball of radius r around c: lengths of
-  // curves within a ball, the same on a mesh and on its flat subdivision.
-  auto length_inside = [&](std::size_t x, const Eigen::Vector3d& c) {
-    const Eigen::Vector3d d = end1[x] - end0[x], m = end0[x] - c;
-    const double a = d.squaredNorm(), b = m.dot(d), k = m.squaredNorm() - r * r;
-    const double disc = b * b - a * k;
-    if(a == 0 || disc <= 0) return 0.;
-    const double root = std::sqrt(disc);
-    const double t0 = (std::max)(0., (-b - root) / a), t1 = (std::min)(1., (-b + root) / a);
-    return t1 > t0 ? (t1 - t0) * std::sqrt(a) : 0.;
-  };
-  std::vector<std::array<std::size_t, 3> > adj(nf), adj_edge(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-    {
-      adj[f][k] = idx.face_id(opposite(h, tm));
-      adj_edge[f][k] = idx.edge_id(h);
-      if(++k == 3) break;
-    }
-  }
   std::vector<std::size_t> candidates;
-  for(std::size_t e = 0; e < ne; ++e)
+  for(std::size_t e = 0; e < is_crease.size(); ++e)
     if(is_crease[e]) candidates.push_back(e);
-  // A search over the faces from the candidate's two faces, across the edges that enter
-  // the ball; the stamps and the queue are a thread's own.
-  struct Work_space
-  {
-    std::vector<std::size_t> face_stamp, edge_stamp, queue;
-  };
-  std::vector<char> fails(candidates.size(), 0);
-  auto test_range = [&](std::size_t first, std::size_t last, Work_space& ws) {
-    if(ws.face_stamp.size() != nf)
-    {
-      ws.face_stamp.assign(nf, std::size_t(-1));
-      ws.edge_stamp.assign(ne, std::size_t(-1));
-    }
-    for(std::size_t i = first; i < last; ++i)
-    {
-      const std::size_t e = candidates[i];
-      const Eigen::Vector3d c = 0.5 * (end0[e] + end1[e]);
-      const auto h = halfedge(idx.edge_at(e), tm);
-      ws.queue.clear();
-      for(std::size_t f : { idx.face_id(h), idx.face_id(opposite(h, tm)) })
-        if(f != idx.npos && ws.face_stamp[f] != e) { ws.face_stamp[f] = e; ws.queue.push_back(f); }
-      double band_length = 0, crease_length = 0;
-      for(std::size_t j = 0; j < ws.queue.size(); ++j)
-      {
-        const std::size_t x = ws.queue[j];
-        for(int k = 0; k < 3; ++k)
-        {
-          const std::size_t y = adj[x][k], ye = adj_edge[x][k];
-          if(ws.edge_stamp[ye] == e) continue; // seen from its other face
-          ws.edge_stamp[ye] = e;
-          const double inside = length_inside(ye, c);
-          if(inside <= 0) continue;
-          if(angle[ye] >= crease_angle) crease_length += inside;
-          else if(band_angle[ye] >= crease_gap_band * crease_angle) band_length += inside;
-          if(y == idx.npos || ws.face_stamp[y] == e) continue;
-          ws.face_stamp[y] = e;
-          ws.queue.push_back(y);
-        }
-      }
-      fails[i] = band_length > crease_gap_ratio * crease_length;
-    }
-  };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(parallel)
-  {
-    tbb::enumerable_thread_specific<Work_space> spaces;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
-                      [&](const tbb::blocked_range<std::size_t>& b) { test_range(b.begin(), b.end(), spaces.local()); });
-  }
-  else
-#endif
-  {
-    (void)parallel;
-    Work_space ws;
-    test_range(0, candidates.size(), ws);
-  }
+  const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
+  const std::vector<Gap_lengths> lengths =
+    crease_gap_lengths(idx, vpm, angle, band_angle, crease_angle, candidates, parallel);
   for(std::size_t i = 0; i < candidates.size(); ++i)
-    if(fails[i]) is_crease[candidates[i]] = 0;
+    if(lengths[i].band > crease_gap_ratio * lengths[i].crease) is_crease[candidates[i]] = 0;
 }
 
 } // namespace internal

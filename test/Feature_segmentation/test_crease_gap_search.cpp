@@ -1,0 +1,144 @@
+// The gap test's search (internal/crease_gap_search): the lengths of the crease and band
+// edges in the ball of a candidate. The hierarchy of clusters must give the lengths of
+// the search face by face, and both the lengths of a cube's edges inside a ball.
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Feature_segmentation/internal/crease_cut.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "test_meshes.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace FS = CGAL::Feature_segmentation;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Surface_mesh<Epick::Point_3> SM;
+typedef FS::internal::Mesh_indexing<SM> Indexing;
+
+// The raw dihedral angles of m's edges.
+std::vector<double> raw_angles(const Indexing& idx, const SM& m)
+{
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area;
+  FS::internal::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
+  return FS::internal::dihedral_angles(idx, normal);
+}
+
+// The lengths of the hierarchical search and of the search face by face for the
+// `candidates`, compared one by one (relative 1e-9: only the order of the sums differs).
+void check_hierarchy_against_faces(const SM& m, const std::vector<std::size_t>& candidates, double crease_angle,
+                                   std::size_t min_levels)
+{
+  const Indexing idx(m);
+  const std::vector<double> angle = raw_angles(idx, m);
+  const auto vpm = get(CGAL::vertex_point, m);
+  const FS::internal::Crease_gap_search<SM, decltype(vpm)> search(idx, vpm, angle, angle, crease_angle);
+  BOOST_TEST(search.number_of_levels() >= min_levels);
+  const auto faces = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, crease_angle, candidates, false, 0);
+  const auto clusters = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, crease_angle, candidates, false);
+  std::size_t mismatches = 0, with_crease = 0, with_band = 0;
+  for(std::size_t i = 0; i < candidates.size(); ++i)
+  {
+    const double tol = 1e-9 * (1 + faces[i].crease + faces[i].band);
+    if(std::abs(faces[i].crease - clusters[i].crease) > tol || std::abs(faces[i].band - clusters[i].band) > tol)
+      ++mismatches;
+    with_crease += faces[i].crease > 0;
+    with_band += faces[i].band > 0;
+  }
+  BOOST_TEST_MESSAGE(candidates.size() << " balls on " << num_faces(m) << " faces, " << search.number_of_levels()
+                     << " levels: " << with_crease << " with crease edges, " << with_band << " with band edges");
+  BOOST_TEST(mismatches == 0u);
+  // the balls hold creases and band edges, so the sums were exercised
+  BOOST_TEST(with_crease > 0u);
+  BOOST_TEST(with_band > 0u);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(crease_gap_search)
+
+// A cube of side 4 (mesh edges 0.1): the ball (radius r = 5% of the diagonal, 0.2 sqrt(3))
+// around the midpoint of a mesh edge on a cube edge, at distance d < r from a corner,
+// holds d + r of that cube edge and sqrt(r^2 - d^2) of each of the two others at the
+// corner; farther from the corners, 2r.
+BOOST_AUTO_TEST_CASE(cube_edges_inside_a_ball)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(4., 4., 4., 40, side));
+  const Indexing idx(m);
+  const std::vector<double> angle = raw_angles(idx, m);
+  const auto vpm = get(CGAL::vertex_point, m);
+  const double r = 0.05 * std::sqrt(48.);
+  std::vector<std::size_t> candidates;
+  std::vector<double> expected;
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    if(angle[e] < 45) continue;
+    // an edge along the x axis at y = z = 0
+    const auto h = halfedge(idx.edge_at(e), m);
+    const auto p = m.point(source(h, m)), q = m.point(target(h, m));
+    if(p.y() != 0 || p.z() != 0 || q.y() != 0 || q.z() != 0) continue;
+    const double d = (std::min)(0.5 * (p.x() + q.x()), 4 - 0.5 * (p.x() + q.x()));
+    candidates.push_back(e);
+    expected.push_back(d >= r ? 2 * r : d + r + 2 * std::sqrt(r * r - d * d));
+  }
+  BOOST_REQUIRE(candidates.size() == 40u);
+  for(int levels : { 0, 8 })
+  {
+    const auto lengths = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, 20., candidates, false, levels);
+    for(std::size_t i = 0; i < candidates.size(); ++i)
+    {
+      BOOST_TEST(lengths[i].crease == expected[i], boost::test_tools::tolerance(1e-9));
+      BOOST_TEST(lengths[i].band == 0.);
+    }
+  }
+}
+
+// fandisk subdivided once (51,784 faces): its creases and, in the band below 20 degrees,
+// the bends of its blends, at every 50th edge and every crease candidate.
+BOOST_AUTO_TEST_CASE(clusters_give_the_lengths_of_the_face_search_on_fandisk)
+{
+  std::vector<Epick::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_soup(std::string(FS_MESH_DIR) + "/fandisk.off", points, polygons));
+  fs_test::Soup s;
+  for(const auto& p : points) s.points.push_back({ p.x(), p.y(), p.z() });
+  s.faces = polygons;
+  fs_test::subdivide_flat(s);
+  const SM m = fs_test::to_mesh<SM>(s);
+  const Indexing idx(m);
+  const std::vector<double> angle = raw_angles(idx, m);
+  std::vector<std::size_t> candidates;
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    if(angle[e] >= 20 || e % 50 == 0) candidates.push_back(e);
+  check_hierarchy_against_faces(m, candidates, 20., 2);
+}
+
+// A zero-length edge, which the face search does not cross: a grid folded by 30 degrees
+// (creases) along u = 0.5 and by 16 degrees (the band) along v = 0.7, one of whose
+// interior vertices is moved onto its neighbour.
+BOOST_AUTO_TEST_CASE(a_zero_length_edge_is_never_crossed_whole)
+{
+  fs_test::Soup s = fs_test::parametric_grid(60, 60, false, false, [](double u, double v) {
+    const double pi = 3.14159265358979323846;
+    const double t = std::tan(15. * pi / 180.), t2 = std::tan(16. * pi / 180.);
+    return std::array<double, 3>{ u, v, -t * std::abs(u - 0.5) - t2 * (std::max)(0., v - 0.7) };
+  });
+  // vertex (i, j) = (20, 30) onto (21, 30): the edge between them has length zero
+  const std::size_t a = 30 * 61 + 20, b = a + 1;
+  s.points[a] = s.points[b];
+  const SM m = fs_test::to_mesh<SM>(s);
+  std::vector<std::size_t> candidates;
+  for(std::size_t e = 0; e < num_edges(m); ++e) candidates.push_back(e);
+  check_hierarchy_against_faces(m, candidates, 20., 1);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
