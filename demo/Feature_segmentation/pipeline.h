@@ -34,6 +34,10 @@
 
 #include <unistd.h> // getpid: names of temporary output files
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -354,25 +358,30 @@ public:
     // summary.json marks a complete set of outputs: a previous run's goes first, and the
     // new one is written last.
     sfs::remove(dir / "summary.json", ec);
+    // The files are independent: written by TBB's threads, one file per task.
+    const std::vector<std::pair<const char*, std::function<void(std::ostream&)> > > files = {
+      { "feature_lines.polylines.txt", [&](std::ostream& os) { FS::write_polylines(os, working_mesh, lines); } },
+      { "feature_lines.obj", [&](std::ostream& os) { FS::write_OBJ_lines(os, working_mesh, lines); } },
+      { "segmentation.ply", [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); } },
+      { "boundaries.polylines.txt", [&](std::ostream& os) { FS::write_boundary_polylines(os, boundaries); } },
+      { "segmentation_refined.ply", [&](std::ostream& os) { FS::write_PLY_segmentation(os, refined, refined_patch); } },
+      { "face_patches.txt",
+        [&](std::ostream& os) {
+          FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.faces.size()),
+                              CGAL::make_property_map(file.faces));
+        } },
+      { "vertex_patches.txt",
+        [&](std::ostream& os) {
+          FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.vertices.size()),
+                              CGAL::make_property_map(file.vertices));
+        } } };
     timer.run("write", [&]() {
-      write_file(dir / "feature_lines.polylines.txt",
-                 [&](std::ostream& os) { FS::write_polylines(os, working_mesh, lines); });
-      write_file(dir / "feature_lines.obj",
-                 [&](std::ostream& os) { FS::write_OBJ_lines(os, working_mesh, lines); });
-      write_file(dir / "segmentation.ply",
-                 [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); });
-      write_file(dir / "boundaries.polylines.txt",
-                 [&](std::ostream& os) { FS::write_boundary_polylines(os, boundaries); });
-      write_file(dir / "segmentation_refined.ply",
-                 [&](std::ostream& os) { FS::write_PLY_segmentation(os, refined, refined_patch); });
-      write_file(dir / "face_patches.txt", [&](std::ostream& os) {
-        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.faces.size()),
-                            CGAL::make_property_map(file.faces));
-      });
-      write_file(dir / "vertex_patches.txt", [&](std::ostream& os) {
-        FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.vertices.size()),
-                            CGAL::make_property_map(file.vertices));
-      });
+#ifdef CGAL_LINKED_WITH_TBB
+      // the first error of a task is rethrown here (TBB cancels the others)
+      tbb::parallel_for(std::size_t(0), files.size(), [&](std::size_t i) { write_file(dir / files[i].first, files[i].second); });
+#else
+      for(const auto& f : files) write_file(dir / f.first, f.second);
+#endif
     });
     // Written last, so that it holds the time of every stage.
     write_file(dir / "summary.json",

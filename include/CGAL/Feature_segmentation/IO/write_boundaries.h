@@ -20,7 +20,11 @@ namespace internal {
 
 inline void write_coordinates(std::ostream& os, const std::array<double, 3>& p)
 {
-  os << p[0] << ' ' << p[1] << ' ' << p[2];
+  write_double(os, p[0]);
+  os.put(' ');
+  write_double(os, p[1]);
+  os.put(' ');
+  write_double(os, p[2]);
 }
 
 } // namespace internal

@@ -22,9 +22,11 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <charconv>
 #include <cstddef>
 #include <ostream>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Feature_segmentation {
@@ -129,15 +131,27 @@ bool write_PLY_segmentation(std::ostream& os, const TriangleMesh& tm,
     internal::write_coordinates(os, get(vpm, v));
     os << '\n';
   }
+  // a face's line is made in a buffer, its numbers by std::to_chars
+  std::vector<char> line;
+  auto put_number = [&line](long long x, char after) {
+    char text[24];
+    const char* end = std::to_chars(text, text + sizeof(text), x).ptr;
+    line.insert(line.end(), static_cast<const char*>(text), end);
+    line.push_back(after);
+  };
   for(face_descriptor f : faces(tm))
   {
-    os << CGAL::halfedges_around_face(halfedge(f, tm), tm).size();
+    line.clear();
+    put_number(static_cast<long long>(CGAL::halfedges_around_face(halfedge(f, tm), tm).size()), ' ');
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      os << ' ' << get(vim, v);
+      put_number(static_cast<long long>(get(vim, v)), ' ');
     const auto id = get(face_patch_map, f);
     const CGAL::IO::Color c = segmentation_colour(id);
-    os << ' ' << static_cast<long long>(id) << ' ' << int(c.red()) << ' ' << int(c.green())
-       << ' ' << int(c.blue()) << '\n';
+    put_number(static_cast<long long>(id), ' ');
+    put_number(c.red(), ' ');
+    put_number(c.green(), ' ');
+    put_number(c.blue(), '\n');
+    os.write(line.data(), std::streamsize(line.size()));
   }
   return os.good();
 }
@@ -158,7 +172,12 @@ template <typename KeyRange, typename PatchMap>
 bool write_patch_ids(std::ostream& os, const KeyRange& keys, PatchMap patch_map)
 {
   for(const auto& k : keys)
-    os << static_cast<long long>(get(patch_map, k)) << '\n';
+  {
+    char text[24];
+    char* end = std::to_chars(text, text + sizeof(text) - 1, static_cast<long long>(get(patch_map, k))).ptr;
+    *end++ = '\n';
+    os.write(text, end - text);
+  }
   return os.good();
 }
 
