@@ -138,7 +138,7 @@ public:
 
   /// \cond SKIP_IN_MANUAL
   typedef internal::Boundary_state<TriangleMesh> State;
-  explicit Patch_boundaries(const State& state) : m_state(state) { update(); }
+  explicit Patch_boundaries(State state) : m_state(std::move(state)) { update(); }
   State& state() { return m_state; }
   const State& state() const { return m_state; }
   // Rebuilds the curves after the state changed.
@@ -266,7 +266,7 @@ Patch_boundaries<TriangleMesh> make_patch_boundaries(const Segmentation_data<Tri
 {
   Boundary_state<TriangleMesh> state(data.idx, data.vin, data.metrics);
   state.initialize(labels, features.dual_vertices);
-  return Patch_boundaries<TriangleMesh>(state);
+  return Patch_boundaries<TriangleMesh>(std::move(state));
 }
 
 } // namespace internal

@@ -97,10 +97,12 @@ public:
     // the edge to it, and the face between edges i and i+1 (npos across the border,
     // which is rotated to the end of the ring).
     ring_offset.assign(nv + 1, 0);
+    ring_entries.reserve(2 * ne);
+    std::vector<std::array<std::size_t, 3> > ring;
     for(std::size_t v = 0; v < nv; ++v)
     {
       const auto vd = idx.vertex_at(v);
-      std::vector<std::array<std::size_t, 3> > ring;
+      ring.clear();
       if(halfedge(vd, tm) != GTr::null_halfedge())
         for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(vd, tm), tm))
           ring.push_back({ idx.id(source(h, tm)), idx.edge_id(h), idx.face_id(h) });
