@@ -7,6 +7,7 @@
 // Meshes: fandisk (12,946 faces, from CGAL's data), fandisk subdivided flat twice
 // (207,136 faces, made here), and rockerarm (41k faces) from the paper's models in
 // --data DIR or $FEATURE_SEGMENTATION_DATA (skipped, with a message, when absent).
+// On fandisk x16 the library's set_alpha() alone is timed too (issue: median <= 5 ms).
 //
 // Usage: bench_editor [--data DIR] [--repeat N] [--out FILE]
 #include "bench_common.h"
@@ -146,6 +147,35 @@ void bench(const std::string& name, const std::string& path, int repeat, std::ve
           undo);
 }
 
+// The library's own alpha edit, without the editor: Feature_aligned_segmentation at its
+// defaults, set_alpha() between 0.6 and 0.9 `repeat` times; "labels" is the time of
+// vertex_patches(), what a caller who asks for every vertex's patch pays after it.
+void bench_set_alpha(const std::string& name, const std::string& path, int repeat, std::vector<Row>& rows)
+{
+  CGAL::Surface_mesh<fs_demo::K::Point_3> m;
+  std::string error;
+  if(!fs_bench::read_mesh(path, m, error)) throw std::runtime_error(path + ": " + error);
+  CGAL::Feature_segmentation::Feature_aligned_segmentation<CGAL::Surface_mesh<fs_demo::K::Point_3> > seg(m);
+  auto patch_map = m.add_property_map<CGAL::SM_Vertex_index, std::size_t>("v:bench_patch").first;
+  std::vector<double> edit, labels, solve;
+  for(int r = 0; r < repeat; ++r)
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    seg.set_alpha(r % 2 ? 0.6 : 0.9);
+    edit.push_back(seconds_since(t0));
+    const auto& st = seg.stage_times();
+    solve.push_back(st.graph + st.solve + st.labels);
+    t0 = std::chrono::steady_clock::now();
+    seg.vertex_patches(patch_map);
+    labels.push_back(seconds_since(t0));
+  }
+  std::cerr << name << ": set_alpha median " << 1000 * median(edit) << " ms, of which the weights of G', the solve "
+            << "and the labels " << 1000 * median(solve) << " ms (" << seg.number_of_oversegments()
+            << " oversegments)" << std::endl;
+  rows.push_back({name, "set_alpha (library)", num_faces(m), seg.number_of_patches(), 1000 * median(edit),
+                  1000 * *std::max_element(edit.begin(), edit.end()), 1000 * median(labels)});
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -177,6 +207,7 @@ int main(int argc, char** argv)
                                                           : rockerarm + " is absent") << std::endl;
     const std::string big = subdivided_fandisk(2);
     bench("fandisk x16", big, repeat, rows);
+    bench_set_alpha("fandisk x16", big, repeat, rows);
     std::filesystem::remove(big);
   }
   catch(const std::exception& e)
@@ -185,7 +216,8 @@ int main(int argc, char** argv)
     return 1;
   }
   std::cout << "Editor answer times, " << fs_bench::cpu_name() << ", one thread, median of " << repeat
-            << " (ms; edit = the POST /api/edit handler's work, labels = the GET /api/labels that follows)\n\n"
+            << " (ms; edit = the POST /api/edit handler's work, labels = the GET /api/labels that follows;"
+            << " set_alpha (library): Feature_aligned_segmentation::set_alpha(), labels = vertex_patches())\n\n"
             << "| mesh | faces | edit | patches | edit median | edit max | labels median |\n"
             << "|---|---:|---|---:|---:|---:|---:|\n";
   std::ofstream csv(out);
