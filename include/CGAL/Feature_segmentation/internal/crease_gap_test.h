@@ -57,15 +57,17 @@ struct Gap_lengths
 
 // The search behind the gap test. The ball of a candidate holds a fixed share of the
 // surface, so a search face by face costs the faces of the ball, which grow with the
-// resolution (every candidate of a 5M-face part visited some 10^5 faces). The faces are
+// resolution (fandisk at 828k faces: 6,900 faces per ball, for each of its 7,008
+// candidates; with the clusters, 1,360 faces and 760 clusters). The faces are
 // therefore grouped into a hierarchy of connected clusters (about 16 faces, then 8
 // clusters per level), each with a bounding sphere, the lengths of the edges it owns
 // (an edge belongs to the cluster of the face of its halfedge) and the faces across its
 // border. A cluster whose sphere lies inside the ball is reached whole once one of its
 // faces is: its lengths are added at once and the search goes on from its border;
-// face by face only in the clusters the ball's sphere cuts. The lengths are those of
-// the face-by-face search (`levels` 0) up to the order of the additions: a cluster with
-// a zero-length edge, which the face search does not cross, is never taken whole.
+// face by face only in the clusters the ball's sphere cuts; levels whose clusters are
+// all larger than a ball are not kept. The lengths are those of the face-by-face search
+// (`max_levels` 0) up to the order of the additions: a cluster with a zero-length edge,
+// which the face search does not cross, is never taken whole.
 template <typename TriangleMesh, typename VPM>
 class Crease_gap_search
 {
