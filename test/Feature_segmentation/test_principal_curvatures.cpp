@@ -248,6 +248,28 @@ BOOST_AUTO_TEST_CASE(parallel_fits_equal_the_sequential_ones_at_any_thread_count
     BOOST_TEST(different == 0u, threads << " threads: " << different << " vertices differ");
   }
 }
+
+// The same with the search over clusters (the fine sphere of
+// radius_over_clusters_keeps_the_sphere_round): the clusters are grown once, in vertex
+// order, before the fits.
+BOOST_AUTO_TEST_CASE(parallel_fits_over_clusters_equal_the_sequential_ones)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::icosphere(2., 6));
+  typedef FS::Principal_curvatures<Epick> PC;
+  auto estimate = [&](auto tag) {
+    auto map = get(CGAL::dynamic_vertex_property_t<PC>(), m);
+    FS::estimate_principal_curvatures(m, map, FS::parameters::neighborhood_radius(0.05).concurrency_tag(tag));
+    std::vector<double> out;
+    for(SM::Vertex_index v : m.vertices()) out.insert(out.end(), { get(map, v).k1, get(map, v).k2, get(map, v).dk1 });
+    return out;
+  };
+  const std::vector<double> sequential = estimate(CGAL::Sequential_tag());
+  for(std::size_t threads : {1u, 2u, 8u})
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    BOOST_TEST((estimate(CGAL::Parallel_tag()) == sequential), threads << " threads");
+  }
+}
 #endif
 
 BOOST_AUTO_TEST_SUITE_END()

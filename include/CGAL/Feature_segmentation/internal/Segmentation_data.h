@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -134,7 +135,9 @@ public:
     // gamma (Eq. 5-6) multiplies a curvature, so it is given for curvatures measured on
     // the mesh scaled so that the largest side of its bounding box is 1, as the authors'
     // tool does before anything else: the result does not depend on the file's units.
-    Edge_weight_terms<TriangleMesh>::compute(idx, vin, gamma, largest_side, metrics, features);
+    auto face_metrics = std::make_shared<std::vector<Triangle_metric> >();
+    Edge_weight_terms<TriangleMesh>::compute(idx, vin, gamma, largest_side, *face_metrics, features);
+    metrics = std::move(face_metrics);
     const TriangleMesh& tm = idx.mesh();
     edge_vertices.resize(idx.number_of_edges());
     for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
@@ -167,7 +170,8 @@ public:
   std::vector<Vertex_tensor_input> vin;
   double diagonal = 0;
   double largest_side = 0;
-  std::vector<Triangle_metric> metrics; // per face: the anisotropic metric of the weights
+  // per face: the anisotropic metric of the weights (shared with the boundaries' states)
+  std::shared_ptr<const std::vector<Triangle_metric> > metrics;
   std::vector<std::pair<std::size_t, std::size_t> > edge_vertices; // per edge (and crease tie)
   Feature_terms features;               // the feature edges and points, the terms
 };

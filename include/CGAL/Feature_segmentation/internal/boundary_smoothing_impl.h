@@ -87,7 +87,7 @@ public:
     if(n == 2) x = 0.5 * (m_s.edge_point(c[0]) + m_s.edge_point(c[1]));
     else
     {
-      const Triangle_metric& m = m_s.metrics[f];
+      const Triangle_metric& m = (*m_s.metrics)[f];
       if(m.is_degenerate()) return false;
       const Vec3 origin = m_s.points[m_s.face_vertices[f][0]];
       const double sq = std::sqrt(m.lambda2);
@@ -153,7 +153,7 @@ public:
       const Vec3 p = m_s.edge_point(e, s);
       double sum = 0;
       for(int k = 0; k < 2; ++k)
-        if(faces[k] != npos) sum += m_s.metrics[faces[k]].anisotropic(p - target[k]);
+        if(faces[k] != npos) sum += (*m_s.metrics)[faces[k]].anisotropic(p - target[k]);
       return sum;
     });
     const double old_t = m_s.edge_t[e];

@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -63,14 +64,15 @@ public:
   static constexpr double face_margin = 1e-3;
 
   // Topology and geometry copied from the indexing and the weights' terms, so that the
-  // state does not refer to the indexing's property maps after construction.
+  // state does not refer to the indexing's property maps after construction; the face
+  // metrics are shared with the segmentation's data (read only, kept alive by the state).
   Boundary_state(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Vertex_tensor_input>& vin,
-                 const std::vector<Triangle_metric>& face_metrics)
-    : m_tm(&idx.mesh()), metrics(face_metrics)
+                 std::shared_ptr<const std::vector<Triangle_metric> > face_metrics)
+    : m_tm(&idx.mesh()), metrics(std::move(face_metrics))
   {
     const TriangleMesh& tm = idx.mesh();
     const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges(), nf = idx.number_of_faces();
-    CGAL_precondition(vin.size() == nv && face_metrics.size() == nf);
+    CGAL_precondition(vin.size() == nv && metrics != nullptr && metrics->size() == nf);
     vertex_list = idx.vertex_list();
     face_list = idx.face_list();
     points.resize(nv);
@@ -200,7 +202,7 @@ public:
 
   double length(std::size_t f, const Vec3& w, bool anisotropic) const
   {
-    return anisotropic ? metrics[f].anisotropic(w) : w.norm();
+    return anisotropic ? (*metrics)[f].anisotropic(w) : w.norm();
   }
 
   // Length of the boundary inside face f.
@@ -359,7 +361,7 @@ public:
   std::vector<typename GTr::face_descriptor> face_list;
   std::vector<halfedge_descriptor> edge_halfedge;
   std::vector<Vec3> points;
-  std::vector<Triangle_metric> metrics;
+  std::shared_ptr<const std::vector<Triangle_metric> > metrics; // of the segmentation's data, shared
   std::vector<std::array<std::size_t, 2> > edge_vertices, edge_faces;
   std::vector<std::array<std::size_t, 3> > face_vertices, face_edges;
   std::vector<std::size_t> ring_offset;

@@ -167,7 +167,7 @@ public:
       }
       std::sort(faces.begin(), faces.end());
       faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-      Edge_weight_terms<TriangleMesh>::update_faces(d.idx, d.vin, d.metrics, *features, faces);
+      Edge_weight_terms<TriangleMesh>::update_faces(d.idx, d.vin, *d.metrics, *features, faces);
       features->number_of_feature_edges = p.count_feature_edges(*features);
       // redo the oversegmentation inside the touched patches
       std::vector<char> region(labels.size(), 0);
