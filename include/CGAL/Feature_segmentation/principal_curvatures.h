@@ -135,7 +135,10 @@ void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, Verte
 /// bounding box diagonal whose normals are within 30 degrees of the vertex normal (so it
 /// does not wrap round a thin wall), thinned evenly to 32 neighbours when larger. A
 /// finer tessellation of the same shape is thus fitted over the same surface and gives
-/// the same crest lines.
+/// the same crest lines. Where the radius spans 8 mean edge lengths or more, the search
+/// beyond the rings goes over connected clusters of vertices about a quarter of the
+/// radius across, each standing for one of its vertices, so that its cost does not grow
+/// with the resolution.
 /// The derivatives follow Yoshizawa, Belyaev and Seidel 2005: the gradient of the signed
 /// fields `k_max` and `k_min`, linear over each triangle, is averaged over the faces
 /// around the vertex (weighted by area) and projected on the direction. Using positions
