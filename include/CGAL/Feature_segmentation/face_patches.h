@@ -13,6 +13,7 @@
 #include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/internal/boundary_refinement_impl.h>
+#include <CGAL/Feature_segmentation/internal/reserve_mesh.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -117,6 +118,16 @@ std::size_t refine_mesh_along_boundaries(const Patch_boundaries<TriangleMesh>& b
 
   const internal::Refinement r = internal::refine_along_boundaries(boundaries.state(), delta);
 
+  {
+    // room for what is added (no doubling of the mesh's arrays): E = (3F + B) / 2, and a
+    // border edge of the input is split at most once
+    std::size_t border = 0;
+    const auto& s = boundaries.state();
+    for(const auto& ef : s.edge_faces) if(ef[0] == s.npos || ef[1] == s.npos) ++border;
+    internal::reserve_mesh(out, num_vertices(out) + r.points.size(),
+                           num_edges(out) + (3 * r.triangles.size() + 2 * border) / 2 + 1,
+                           num_faces(out) + r.triangles.size());
+  }
   Out_vpm vpm = get(CGAL::vertex_point, out);
   std::vector<typename GTo::vertex_descriptor> vs;
   vs.reserve(r.points.size());

@@ -2,6 +2,8 @@
 // Contiguous indices for the vertices, edges and faces of any FaceGraph, so that the
 // stages keep their scratch data in std::vectors (no std::map keyed by descriptors, no
 // property added to the user's mesh). Built once per mesh and shared by the stages.
+// On a Surface_mesh without removed elements the ids are the mesh's own indices, so
+// nothing is stored (for the halfedges too: edge i owns halfedges 2i and 2i+1 there).
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_MESH_INDEXING_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_MESH_INDEXING_H
@@ -13,12 +15,22 @@
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Dynamic_property_map.h>
 
+#include <boost/range/adaptor/transformed.hpp>
+#include <boost/range/counting_range.hpp>
+
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
+
 #include <cstddef>
+#include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
+
+template <typename T> struct Is_surface_mesh : std::false_type {};
+template <typename P> struct Is_surface_mesh<CGAL::Surface_mesh<P> > : std::true_type {};
 
 template <typename TriangleMesh>
 class Mesh_indexing
@@ -36,42 +48,84 @@ public:
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<std::size_t> >::const_type HIMap;
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t> >::const_type FIMap;
 
-  explicit Mesh_indexing(const TriangleMesh& tm)
-    : m_tm(tm),
-      m_vimap(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm)),
-      m_himap(get(CGAL::dynamic_halfedge_property_t<std::size_t>(), tm)),
-      m_fimap(get(CGAL::dynamic_face_property_t<std::size_t>(), tm))
+  explicit Mesh_indexing(const TriangleMesh& tm) : m_tm(tm)
   {
     CGAL_FEATURE_SEGMENTATION_COUNT_PASS(indexings);
-    for(vertex_descriptor v : vertices(tm)) { put(m_vimap, v, m_vertices.size()); m_vertices.push_back(v); }
-    for(face_descriptor f : faces(tm)) { put(m_fimap, f, m_faces.size()); m_faces.push_back(f); }
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(!tm.has_garbage())
+      {
+        m_identity = true;
+        m_nv = tm.number_of_vertices();
+        m_ne = tm.number_of_edges();
+        m_nf = tm.number_of_faces();
+        return;
+      }
+    m_vimap.emplace(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm));
+    m_himap.emplace(get(CGAL::dynamic_halfedge_property_t<std::size_t>(), tm));
+    m_fimap.emplace(get(CGAL::dynamic_face_property_t<std::size_t>(), tm));
+    for(vertex_descriptor v : vertices(tm)) { put(*m_vimap, v, m_vertices.size()); m_vertices.push_back(v); }
+    for(face_descriptor f : faces(tm)) { put(*m_fimap, f, m_faces.size()); m_faces.push_back(f); }
     // Edge i owns halfedges 2i and 2i+1 in this numbering (whatever the mesh's own).
     for(edge_descriptor e : edges(tm))
     {
       halfedge_descriptor h = halfedge(e, tm);
-      put(m_himap, h, 2 * m_edges.size());
-      put(m_himap, opposite(h, tm), 2 * m_edges.size() + 1);
+      put(*m_himap, h, 2 * m_edges.size());
+      put(*m_himap, opposite(h, tm), 2 * m_edges.size() + 1);
       m_edges.push_back(e);
     }
+    m_nv = m_vertices.size();
+    m_ne = m_edges.size();
+    m_nf = m_faces.size();
   }
 
   const TriangleMesh& mesh() const { return m_tm; }
-  std::size_t number_of_vertices() const { return m_vertices.size(); }
-  std::size_t number_of_edges() const { return m_edges.size(); }
-  std::size_t number_of_faces() const { return m_faces.size(); }
+  std::size_t number_of_vertices() const { return m_nv; }
+  std::size_t number_of_edges() const { return m_ne; }
+  std::size_t number_of_faces() const { return m_nf; }
 
-  std::size_t id(vertex_descriptor v) const { return get(m_vimap, v); }
-  std::size_t id(face_descriptor f) const { return get(m_fimap, f); }
-  std::size_t id(edge_descriptor e) const { return get(m_himap, halfedge(e, m_tm)) / 2; }
-  std::size_t halfedge_id(halfedge_descriptor h) const { return get(m_himap, h); }
-  std::size_t edge_id(halfedge_descriptor h) const { return get(m_himap, h) / 2; }
+  std::size_t id(vertex_descriptor v) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return std::size_t(v.idx());
+    return get(*m_vimap, v);
+  }
+  std::size_t id(face_descriptor f) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return std::size_t(f.idx());
+    return get(*m_fimap, f);
+  }
+  std::size_t halfedge_id(halfedge_descriptor h) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return std::size_t(h.idx());
+    return get(*m_himap, h);
+  }
+  std::size_t id(edge_descriptor e) const { return halfedge_id(halfedge(e, m_tm)) / 2; }
+  std::size_t edge_id(halfedge_descriptor h) const { return halfedge_id(h) / 2; }
 
-  vertex_descriptor vertex_at(std::size_t i) const { return m_vertices[i]; }
-  face_descriptor face_at(std::size_t i) const { return m_faces[i]; }
-  edge_descriptor edge_at(std::size_t i) const { return m_edges[i]; }
-  const std::vector<vertex_descriptor>& vertex_list() const { return m_vertices; }
-  const std::vector<face_descriptor>& face_list() const { return m_faces; }
-  const std::vector<edge_descriptor>& edge_list() const { return m_edges; }
+  vertex_descriptor vertex_at(std::size_t i) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return vertex_descriptor(typename TriangleMesh::size_type(i));
+    return m_vertices[i];
+  }
+  face_descriptor face_at(std::size_t i) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return face_descriptor(typename TriangleMesh::size_type(i));
+    return m_faces[i];
+  }
+  edge_descriptor edge_at(std::size_t i) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return edge_descriptor(typename TriangleMesh::size_type(i));
+    return m_edges[i];
+  }
+  // The elements in id order.
+  auto vertex_list() const { return make_range(m_nv, [this](std::size_t i) { return vertex_at(i); }); }
+  auto face_list() const { return make_range(m_nf, [this](std::size_t i) { return face_at(i); }); }
+  auto edge_list() const { return make_range(m_ne, [this](std::size_t i) { return edge_at(i); }); }
 
   /// Face id on the side of `h`, or `npos` on a border halfedge.
   std::size_t face_id(halfedge_descriptor h) const
@@ -83,10 +137,18 @@ public:
   static constexpr std::size_t npos = std::size_t(-1);
 
 private:
+  template <typename At>
+  static auto make_range(std::size_t n, At at)
+  {
+    return boost::adaptors::transform(boost::counting_range(std::size_t(0), n), at);
+  }
+
   const TriangleMesh& m_tm;
-  VIMap m_vimap;
-  HIMap m_himap;
-  FIMap m_fimap;
+  bool m_identity = false;
+  std::size_t m_nv = 0, m_ne = 0, m_nf = 0;
+  std::optional<VIMap> m_vimap;
+  std::optional<HIMap> m_himap;
+  std::optional<FIMap> m_fimap;
   std::vector<vertex_descriptor> m_vertices;
   std::vector<face_descriptor> m_faces;
   std::vector<edge_descriptor> m_edges;

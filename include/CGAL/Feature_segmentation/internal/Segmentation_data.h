@@ -13,6 +13,7 @@
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/compact_index.h>
 #include <CGAL/Feature_segmentation/internal/edge_weights_impl.h>
 
 #include <Eigen/Dense>
@@ -139,6 +140,7 @@ public:
     Edge_weight_terms<TriangleMesh>::compute(idx, vin, gamma, largest_side, *face_metrics, features);
     metrics = std::move(face_metrics);
     const TriangleMesh& tm = idx.mesh();
+    check_compact_index_range(idx.number_of_vertices());
     edge_vertices.resize(idx.number_of_edges());
     for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
     {
@@ -172,7 +174,7 @@ public:
   double largest_side = 0;
   // per face: the anisotropic metric of the weights (shared with the boundaries' states)
   std::shared_ptr<const std::vector<Triangle_metric> > metrics;
-  std::vector<std::pair<std::size_t, std::size_t> > edge_vertices; // per edge (and crease tie)
+  Edge_vertex_list edge_vertices;        // per edge (and crease tie)
   Feature_terms features;               // the feature edges and points, the terms
 };
 

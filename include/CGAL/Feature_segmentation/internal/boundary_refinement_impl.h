@@ -43,8 +43,8 @@ std::size_t majority_patch(const Boundary_state<TriangleMesh>& s, std::size_t f)
 struct Refinement
 {
   std::vector<Eigen::Vector3d> points;
-  std::vector<std::array<std::size_t, 3> > triangles;
-  std::vector<std::size_t> patches;
+  std::vector<std::array<Compact_index, 3> > triangles;
+  std::vector<Compact_index> patches;
   std::size_t split_faces = 0;
 };
 
@@ -54,6 +54,8 @@ Refinement refine_along_boundaries(const Boundary_state<TriangleMesh>& s, double
   typedef Eigen::Vector3d Vec3;
   const std::size_t npos = std::size_t(-1);
   Refinement r;
+  // points: at most a new one per edge and per face
+  check_compact_index_range(s.number_of_vertices() + s.number_of_edges() + s.number_of_faces());
   r.points = s.points;
   // Every cut edge: a new vertex at its point, or the end it snaps to.
   std::vector<std::size_t> edge_node(s.number_of_edges(), npos);

@@ -135,7 +135,7 @@ public:
   // its edge points: a convex function of the edge parameter, minimised by golden section.
   bool update_edge(std::size_t e)
   {
-    std::array<std::size_t, 2> faces = m_s.edge_faces[e];
+    std::array<std::size_t, 2> faces = { m_s.edge_faces[e][0], m_s.edge_faces[e][1] };
     std::array<Vec3, 2> target;
     std::array<bool, 2> through = { false, false };
     for(int k = 0; k < 2; ++k)

@@ -12,6 +12,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_BOUNDARY_STATE_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/compact_index.h>
 #include <CGAL/Feature_segmentation/internal/edge_weights_impl.h>
 
 #include <CGAL/assertions.h>
@@ -73,8 +74,9 @@ public:
     const TriangleMesh& tm = idx.mesh();
     const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges(), nf = idx.number_of_faces();
     CGAL_precondition(vin.size() == nv && metrics != nullptr && metrics->size() == nf);
-    vertex_list = idx.vertex_list();
-    face_list = idx.face_list();
+    check_compact_index_range(std::max({ nv, 2 * ne, nf }));
+    vertex_list.assign(idx.vertex_list().begin(), idx.vertex_list().end());
+    face_list.assign(idx.face_list().begin(), idx.face_list().end());
     points.resize(nv);
     for(std::size_t v = 0; v < nv; ++v) points[v] = vin[v].p;
     edge_halfedge.resize(ne);
@@ -100,7 +102,7 @@ public:
     // which is rotated to the end of the ring).
     ring_offset.assign(nv + 1, 0);
     ring_entries.reserve(2 * ne);
-    std::vector<std::array<std::size_t, 3> > ring;
+    std::vector<std::array<Compact_index, 3> > ring;
     for(std::size_t v = 0; v < nv; ++v)
     {
       const auto vd = idx.vertex_at(v);
@@ -109,7 +111,7 @@ public:
         for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(vd, tm), tm))
           ring.push_back({ idx.id(source(h, tm)), idx.edge_id(h), idx.face_id(h) });
       const auto gap = std::find_if(ring.begin(), ring.end(),
-                                    [](const std::array<std::size_t, 3>& r) { return r[2] == npos; });
+                                    [](const std::array<Compact_index, 3>& r) { return r[2] == npos; });
       if(gap != ring.end()) std::rotate(ring.begin(), gap + 1, ring.end());
       for(const auto& r : ring) ring_entries.push_back(r);
       ring_offset[v + 1] = ring_entries.size();
@@ -362,10 +364,11 @@ public:
   std::vector<halfedge_descriptor> edge_halfedge;
   std::vector<Vec3> points;
   std::shared_ptr<const std::vector<Triangle_metric> > metrics; // of the segmentation's data, shared
-  std::vector<std::array<std::size_t, 2> > edge_vertices, edge_faces;
-  std::vector<std::array<std::size_t, 3> > face_vertices, face_edges;
-  std::vector<std::size_t> ring_offset;
-  std::vector<std::array<std::size_t, 3> > ring_entries; // (neighbour, edge, face)
+  // ids in 32 bits (Compact_index): the topology is a third of the state's memory
+  std::vector<std::array<Compact_index, 2> > edge_vertices, edge_faces;
+  std::vector<std::array<Compact_index, 3> > face_vertices, face_edges;
+  std::vector<Compact_index> ring_offset;
+  std::vector<std::array<Compact_index, 3> > ring_entries; // (neighbour, edge, face)
 
   std::vector<std::size_t> labels; // patch per vertex
   std::vector<double> edge_t;      // per cut edge: the point (1-t) source + t target of edge_halfedge

@@ -13,6 +13,8 @@
 
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/compact_index.h>
+#include <CGAL/Feature_segmentation/internal/reserve_mesh.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
 
@@ -307,10 +309,11 @@ struct Crease_cut
   std::vector<char> is_crease;                    // per input edge
   std::size_t number_of_creases = 0;
   bool clean = false;                             // a clean tessellation (normal roughness at most 0.01)
-  std::vector<std::size_t> input_vertex;          // per working vertex: the input vertex it copies
-  std::vector<std::size_t> working_vertex;        // per input vertex: its copy in its first face's sector
-  std::vector<std::size_t> working_halfedge;      // per input halfedge: the working halfedge
-  std::vector<std::size_t> input_edge;            // per working edge: the input edge
+  // ids in 32 bits (Compact_index)
+  std::vector<Compact_index> input_vertex;        // per working vertex: the input vertex it copies
+  std::vector<Compact_index> working_vertex;      // per input vertex: its copy in its first face's sector
+  std::vector<Compact_index> working_halfedge;    // per input halfedge: the working halfedge
+  std::vector<Compact_index> input_edge;          // per working edge: the input edge
   std::vector<Crease_tie> ties;
 
   bool is_cut() const { return mesh != nullptr; }
@@ -330,6 +333,8 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   typedef typename GTr::face_descriptor face_descriptor;
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces(), ne = idx.number_of_edges();
+  // the working mesh has at most 3 nf vertices and 2 ne edges
+  check_compact_index_range(std::max(3 * nf, 4 * ne));
 
   cut = Crease_cut<TriangleMesh>();
   cut.is_crease.assign(ne, 0);
@@ -400,6 +405,8 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   // The cut copy, built face by face in the input's face order.
   cut.mesh = std::make_unique<TriangleMesh>();
   TriangleMesh& wm = *cut.mesh;
+  // exactly what the copy holds (no doubling of its arrays): a crease becomes two edges
+  reserve_mesh(wm, cut.input_vertex.size(), ne + cut.number_of_creases, nf);
   auto wvpm = get(CGAL::vertex_point, wm);
   typedef typename boost::property_traits<decltype(wvpm)>::value_type WPoint;
   std::vector<vertex_descriptor> wv(cut.input_vertex.size());

@@ -78,7 +78,7 @@ public:
 
   std::size_t working_vertex(std::size_t input_vertex) const
   {
-    return cut.is_cut() ? cut.working_vertex[input_vertex] : input_vertex;
+    return cut.is_cut() ? std::size_t(cut.working_vertex[input_vertex]) : input_vertex;
   }
   std::size_t working_vertex(vertex_descriptor v) const { return working_vertex(input_indexing().id(v)); }
   face_descriptor working_face(face_descriptor f) const
@@ -218,6 +218,15 @@ private:
     tie_begin.assign(in.number_of_edges() + 1, 0);
     for(const Crease_tie& t : cut.ties) ++tie_begin[t.crease_edge + 1];
     for(std::size_t e = 0; e < in.number_of_edges(); ++e) tie_begin[e + 1] += tie_begin[e];
+    {
+      // exactly the room the ties take (a growing vector would keep up to twice that)
+      const std::size_t total = first_tie + cut.ties.size();
+      d.edge_vertices.reserve(total);
+      d.features.similarity.reserve(total);
+      d.features.award.reserve(total);
+      d.features.is_feature_edge.reserve(total);
+      a.reserve(total);
+    }
     for(const Crease_tie& t : cut.ties) // in crease-edge order
     {
       d.edge_vertices.emplace_back(t.a, t.b);

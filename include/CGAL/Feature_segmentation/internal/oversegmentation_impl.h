@@ -42,30 +42,35 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   const std::size_t nf = idx.number_of_faces(), nv = idx.number_of_vertices();
   // dual graph: one dual edge per interior mesh edge, of length Similarity (anisotropic
   // distance) or Award (Euclidean, the geodesic variant of Mitani-Suzuki and Levy et al.)
-  std::vector<std::pair<std::size_t, std::size_t> > dual;
-  std::vector<double> len;
   std::vector<char> source(nf, 0), face_in(nf, 1);
   auto in_region = [&](std::size_t v) { return vertex_in_region == nullptr || (*vertex_in_region)[v] != 0; };
   if(vertex_in_region != nullptr)
     for(std::size_t f = 0; f < nf; ++f)
       for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
         if(!in_region(idx.id(target(h, tm)))) face_in[f] = 0;
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-  {
-    auto h = halfedge(idx.edge_at(e), tm);
-    std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
-    if(f1 != Mesh_indexing<TriangleMesh>::npos && !face_in[f1]) f1 = Mesh_indexing<TriangleMesh>::npos;
-    if(f2 != Mesh_indexing<TriangleMesh>::npos && !face_in[f2]) f2 = Mesh_indexing<TriangleMesh>::npos;
-    if(features.is_feature_edge[e])
+  // (the edge list is freed once the graph is made)
+  const Csr_graph g = [&]() {
+    std::vector<std::pair<Compact_index, Compact_index> > dual;
+    std::vector<double> len;
+    dual.reserve(idx.number_of_edges());
+    len.reserve(idx.number_of_edges());
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
     {
-      if(f1 != Mesh_indexing<TriangleMesh>::npos) source[f1] = 1;
-      if(f2 != Mesh_indexing<TriangleMesh>::npos) source[f2] = 1;
+      auto h = halfedge(idx.edge_at(e), tm);
+      std::size_t f1 = idx.face_id(h), f2 = idx.face_id(opposite(h, tm));
+      if(f1 != Mesh_indexing<TriangleMesh>::npos && !face_in[f1]) f1 = Mesh_indexing<TriangleMesh>::npos;
+      if(f2 != Mesh_indexing<TriangleMesh>::npos && !face_in[f2]) f2 = Mesh_indexing<TriangleMesh>::npos;
+      if(features.is_feature_edge[e])
+      {
+        if(f1 != Mesh_indexing<TriangleMesh>::npos) source[f1] = 1;
+        if(f2 != Mesh_indexing<TriangleMesh>::npos) source[f2] = 1;
+      }
+      if(f1 == Mesh_indexing<TriangleMesh>::npos || f2 == Mesh_indexing<TriangleMesh>::npos) continue;
+      dual.emplace_back(f1, f2);
+      len.push_back(anisotropic ? features.similarity[e] : features.award[e]);
     }
-    if(f1 == Mesh_indexing<TriangleMesh>::npos || f2 == Mesh_indexing<TriangleMesh>::npos) continue;
-    dual.emplace_back(f1, f2);
-    len.push_back(anisotropic ? features.similarity[e] : features.award[e]);
-  }
-  const Csr_graph g = Csr_graph::from_edges(nf, dual, len);
+    return Csr_graph::from_edges(nf, dual, len);
+  }();
   std::vector<double> height = multi_source_distances(g, source);
   for(double& h : height) h = -h; // basins lie far from the features
   Oversegmentation os;
@@ -162,7 +167,7 @@ struct Reduced_graph
   std::vector<std::size_t> cross;       // mesh edge ids
 
   void build(const std::vector<std::size_t>& vertex_segment, std::size_t k,
-             const std::vector<std::pair<std::size_t, std::size_t> >& edge_vertices)
+             const Edge_vertex_list& edge_vertices)
   {
     number_of_nodes = k;
     std::vector<std::tuple<std::size_t, std::size_t, std::size_t> > c;

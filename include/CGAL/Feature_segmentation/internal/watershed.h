@@ -6,12 +6,17 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_WATERSHED_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_WATERSHED_H
 
+#include <CGAL/Feature_segmentation/internal/compact_index.h>
+
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/iterator/iterator_facade.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <deque>
 #include <limits>
 #include <numeric>
@@ -23,63 +28,86 @@ namespace Feature_segmentation {
 namespace internal {
 
 // An undirected graph in compressed rows: the neighbours of node i are
-// target[begin[i] .. begin[i+1]), with edge lengths in length[].
+// target[begin[i] .. begin[i+1]), with edge lengths in length[]. Ids in 32 bits.
 struct Csr_graph
 {
-  std::vector<std::size_t> begin;  // size n + 1
-  std::vector<std::size_t> target;
+  std::vector<Compact_index> begin;  // size n + 1
+  std::vector<Compact_index> target;
   std::vector<double> length;
   std::size_t number_of_nodes() const { return begin.empty() ? 0 : begin.size() - 1; }
 
-  // From an undirected edge list; each edge is stored in both directions.
-  static Csr_graph from_edges(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t> >& edges,
-                              const std::vector<double>& lengths)
+  // From an undirected edge list (pairs of node ids); each edge is stored in both
+  // directions.
+  template <typename EdgeList>
+  static Csr_graph from_edges(std::size_t n, const EdgeList& edges, const std::vector<double>& lengths)
   {
+    check_compact_index_range(std::max(n + 1, 2 * edges.size()));
     Csr_graph g;
-    g.begin.assign(n + 1, 0);
-    for(const auto& e : edges) { ++g.begin[e.first + 1]; ++g.begin[e.second + 1]; }
-    for(std::size_t i = 0; i < n; ++i) g.begin[i + 1] += g.begin[i];
-    g.target.resize(g.begin[n]);
-    g.length.resize(g.begin[n]);
-    std::vector<std::size_t> fill(g.begin.begin(), g.begin.end() - 1);
+    std::vector<std::size_t> fill(n + 1, 0);
+    for(const auto& e : edges) { ++fill[std::size_t(e.first) + 1]; ++fill[std::size_t(e.second) + 1]; }
+    for(std::size_t i = 0; i < n; ++i) fill[i + 1] += fill[i];
+    g.begin.assign(fill.begin(), fill.end());
+    g.target.resize(fill[n]);
+    g.length.resize(fill[n]);
     for(std::size_t k = 0; k < edges.size(); ++k)
     {
-      const auto& e = edges[k];
-      g.target[fill[e.first]] = e.second; g.length[fill[e.first]++] = lengths[k];
-      g.target[fill[e.second]] = e.first; g.length[fill[e.second]++] = lengths[k];
+      const std::size_t a = edges[k].first, b = edges[k].second;
+      g.target[fill[a]] = b; g.length[fill[a]++] = lengths[k];
+      g.target[fill[b]] = a; g.length[fill[b]++] = lengths[k];
     }
     return g;
   }
 };
 
+// The arcs (source, target) of a Csr_graph in their order, which is sorted by source:
+// what BGL's compressed_sparse_row_graph is built from, without a copy of the list.
+class Csr_arc_iterator
+  : public boost::iterator_facade<Csr_arc_iterator, std::pair<std::uint32_t, std::uint32_t>,
+                                  boost::forward_traversal_tag, std::pair<std::uint32_t, std::uint32_t> >
+{
+public:
+  Csr_arc_iterator() = default;
+  Csr_arc_iterator(const Csr_graph& g, std::size_t k) : m_g(&g), m_k(k) { skip(); }
+
+private:
+  friend class boost::iterator_core_access;
+  void skip()
+  {
+    while(m_node + 1 < m_g->begin.size() && m_k >= std::size_t(m_g->begin[m_node + 1])) ++m_node;
+  }
+  void increment() { ++m_k; skip(); }
+  bool equal(const Csr_arc_iterator& o) const { return m_k == o.m_k; }
+  std::pair<std::uint32_t, std::uint32_t> dereference() const
+  {
+    return { std::uint32_t(m_node), std::uint32_t(std::size_t(m_g->target[m_k])) };
+  }
+
+  const Csr_graph* m_g = nullptr;
+  std::size_t m_k = 0, m_node = 0;
+};
+
 // Shortest distance from the nearest source to every node (infinity if unreachable),
-// by BGL's Dijkstra from a virtual node joined to every source by a zero-length edge.
+// by BGL's multi-source Dijkstra.
 inline std::vector<double> multi_source_distances(const Csr_graph& g, const std::vector<char>& is_source)
 {
   typedef boost::compressed_sparse_row_graph<boost::directedS, boost::no_property,
-                                             boost::property<boost::edge_weight_t, double> > Graph;
+                                             boost::property<boost::edge_weight_t, double>, boost::no_property,
+                                             std::uint32_t, std::uint32_t> Graph;
+  typedef boost::graph_traits<Graph>::vertex_descriptor Vertex;
   const std::size_t n = g.number_of_nodes();
-  std::vector<std::pair<std::size_t, std::size_t> > arcs;
-  std::vector<double> w;
-  arcs.reserve(g.target.size() + n);
-  w.reserve(g.target.size() + n);
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t k = g.begin[i]; k < g.begin[i + 1]; ++k)
-    {
-      arcs.emplace_back(i, g.target[k]);
-      w.push_back(g.length[k]);
-    }
-  for(std::size_t i = 0; i < n; ++i)
-    if(is_source[i]) { arcs.emplace_back(n, i); w.push_back(0.); }
-  Graph bg(boost::edges_are_unsorted_multi_pass, arcs.begin(), arcs.end(), w.begin(), n + 1);
-  std::vector<double> dist(n + 1, 0.);
-  boost::dijkstra_shortest_paths(
-    bg, std::size_t(n),
-    boost::distance_map(boost::make_iterator_property_map(dist.begin(), get(boost::vertex_index, bg)))
-      .distance_inf((std::numeric_limits<double>::max)()));
-  dist.pop_back();
+  std::vector<double> dist(n, 0.);
+  if(n == 0) return dist;
+  const Graph bg(boost::edges_are_sorted, Csr_arc_iterator(g, 0), Csr_arc_iterator(g, g.target.size()),
+                 g.length.begin(), Graph::vertices_size_type(n), Graph::edges_size_type(g.target.size()));
+  std::vector<Vertex> sources;
+  for(std::size_t i = 0; i < n; ++i) if(is_source[i]) sources.push_back(Vertex(i));
+  const double inf = (std::numeric_limits<double>::max)();
+  boost::dijkstra_shortest_paths(bg, sources.begin(), sources.end(), boost::dummy_property_map(),
+                                 boost::make_iterator_property_map(dist.begin(), get(boost::vertex_index, bg)),
+                                 get(boost::edge_weight, bg), get(boost::vertex_index, bg), std::less<double>(),
+                                 boost::closed_plus<double>(inf), inf, 0., boost::default_dijkstra_visitor());
   for(double& d : dist)
-    if(d == (std::numeric_limits<double>::max)()) d = std::numeric_limits<double>::infinity();
+    if(d == inf) d = std::numeric_limits<double>::infinity();
   return dist;
 }
 
