@@ -264,7 +264,7 @@ Patch_boundaries<TriangleMesh> make_patch_boundaries(const Segmentation_data<Tri
                                                      const Feature_terms& features,
                                                      const std::vector<std::size_t>& labels)
 {
-  Boundary_state<TriangleMesh> state(data.idx, data.vin, data.metrics);
+  Boundary_state<TriangleMesh> state(data.idx, data.points, data.metrics);
   state.initialize(labels, features.dual_vertices);
   return Patch_boundaries<TriangleMesh>(std::move(state));
 }

@@ -86,6 +86,7 @@ public:
   void set_geometry(VPM vpm, CurvatureMap cmap)
   {
     vin.resize(idx.number_of_vertices());
+    points.resize(idx.number_of_vertices());
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for(std::size_t i = 0; i < vin.size(); ++i)
     {
@@ -98,6 +99,7 @@ public:
       x.k2 = CGAL::to_double(c.k2);
       x.d1 = Vec3(CGAL::to_double(c.d1.x()), CGAL::to_double(c.d1.y()), CGAL::to_double(c.d1.z()));
       x.d2 = Vec3(CGAL::to_double(c.d2.x()), CGAL::to_double(c.d2.y()), CGAL::to_double(c.d2.z()));
+      points[i] = x.p;
       lo = lo.cwiseMin(x.p);
       hi = hi.cwiseMax(x.p);
     }
@@ -113,8 +115,7 @@ public:
     const std::size_t ne = idx.number_of_edges();
     Feature_terms& f = features;
     f.is_feature_edge.assign(ne, 0);
-    f.point_sum.assign(ne, Vec3::Zero());
-    f.point_count.assign(ne, 0);
+    f.clear_points(ne);
     for(std::size_t e = 0; e < ne; ++e)
       f.is_feature_edge[e] = get(is_feature, idx.edge_at(e)) ? 1 : 0;
     // the feature edges are the edges that contain a feature point (paper, 3.1)
@@ -122,9 +123,8 @@ public:
       for(const auto& fp : l.points)
       {
         const std::size_t e = idx.edge_id(fp.halfedge);
-        f.point_sum[e] += (1 - fp.t) * vin[idx.id(source(fp.halfedge, tm))].p +
-                          fp.t * vin[idx.id(target(fp.halfedge, tm))].p;
-        ++f.point_count[e];
+        f.add_point(e, (1 - fp.t) * points[idx.id(source(fp.halfedge, tm))] +
+                         fp.t * points[idx.id(target(fp.halfedge, tm))]);
         f.is_feature_edge[e] = 1;
       }
     f.number_of_feature_edges = std::size_t(std::count(f.is_feature_edge.begin(), f.is_feature_edge.end(), 1));
@@ -137,8 +137,10 @@ public:
     // the mesh scaled so that the largest side of its bounding box is 1, as the authors'
     // tool does before anything else: the result does not depend on the file's units.
     auto face_metrics = std::make_shared<std::vector<Triangle_metric> >();
-    Edge_weight_terms<TriangleMesh>::compute(idx, vin, gamma, largest_side, *face_metrics, features);
+    Edge_weight_terms<TriangleMesh>::compute(idx, vin, points, gamma, largest_side, *face_metrics, features);
     metrics = std::move(face_metrics);
+    // the curvature tensors are in the metrics now: only the positions are kept
+    std::vector<Vertex_tensor_input>().swap(vin);
     const TriangleMesh& tm = idx.mesh();
     check_compact_index_range(idx.number_of_vertices());
     edge_vertices.resize(idx.number_of_edges());
@@ -169,7 +171,8 @@ public:
   }
 
   Indexing idx;
-  std::vector<Vertex_tensor_input> vin;
+  std::vector<Vertex_tensor_input> vin; // from set_geometry() to compute_terms(), then freed
+  std::vector<Vec3> points;             // vertex positions
   double diagonal = 0;
   double largest_side = 0;
   // per face: the anisotropic metric of the weights (shared with the boundaries' states)

@@ -67,18 +67,17 @@ public:
   // Topology and geometry copied from the indexing and the weights' terms, so that the
   // state does not refer to the indexing's property maps after construction; the face
   // metrics are shared with the segmentation's data (read only, kept alive by the state).
-  Boundary_state(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Vertex_tensor_input>& vin,
+  Boundary_state(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Vec3>& vertex_points,
                  std::shared_ptr<const std::vector<Triangle_metric> > face_metrics)
     : m_tm(&idx.mesh()), metrics(std::move(face_metrics))
   {
     const TriangleMesh& tm = idx.mesh();
     const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges(), nf = idx.number_of_faces();
-    CGAL_precondition(vin.size() == nv && metrics != nullptr && metrics->size() == nf);
+    CGAL_precondition(vertex_points.size() == nv && metrics != nullptr && metrics->size() == nf);
     check_compact_index_range(std::max({ nv, 2 * ne, nf }));
     vertex_list.assign(idx.vertex_list().begin(), idx.vertex_list().end());
     face_list.assign(idx.face_list().begin(), idx.face_list().end());
-    points.resize(nv);
-    for(std::size_t v = 0; v < nv; ++v) points[v] = vin[v].p;
+    points = vertex_points;
     edge_halfedge.resize(ne);
     edge_vertices.resize(ne);
     edge_faces.resize(ne);

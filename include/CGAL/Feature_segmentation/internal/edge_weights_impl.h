@@ -9,6 +9,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_EDGE_WEIGHTS_IMPL_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/compact_index.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -64,8 +65,11 @@ struct Feature_terms
   typedef Eigen::Vector3d Vec3;
 
   std::vector<char> is_feature_edge;     // per edge (and crease tie)
-  std::vector<Vec3> point_sum;           // per edge: sum of its feature points
-  std::vector<int> point_count;          // per edge: their number
+  // The feature points on the edges, as a sum and a count per edge that has any: a few
+  // edges of the mesh, so the sums are kept for those edges only.
+  std::vector<Compact_index> point_slot; // per edge: its entry in point_sum, or none
+  std::vector<Vec3> point_sum;           // per entry: sum of the edge's feature points
+  std::vector<int> point_count;          // per entry: their number
   std::size_t number_of_feature_edges = 0;
   std::vector<Vec3> dual_vertices;       // per face
   std::vector<double> similarity, award; // per edge (and crease tie)
@@ -73,9 +77,38 @@ struct Feature_terms
   // w(e) = Similarity(e) - alpha_e Award(e), Eq. 3.
   double weight(std::size_t e, double alpha_e) const { return similarity[e] - alpha_e * award[e]; }
 
+  // No feature point on any of `number_of_edges` edges.
+  void clear_points(std::size_t number_of_edges)
+  {
+    point_slot.assign(number_of_edges, std::size_t(-1));
+    point_sum.clear();
+    point_count.clear();
+  }
+  void add_point(std::size_t e, const Vec3& p)
+  {
+    std::size_t k = point_slot[e];
+    if(k == std::size_t(-1))
+    {
+      k = point_sum.size();
+      point_slot[e] = k;
+      point_sum.push_back(Vec3::Zero());
+      point_count.push_back(0);
+    }
+    point_sum[k] += p;
+    ++point_count[k];
+  }
+  bool has_points(std::size_t e) const { return e < point_slot.size() && point_slot[e] != std::size_t(-1); }
+  // The centroid of the feature points of `e` (which has some).
+  Vec3 mean_point(std::size_t e) const
+  {
+    const std::size_t k = point_slot[e];
+    return Vec3(point_sum[k] / point_count[k]);
+  }
+
   std::size_t memory() const
   {
-    return is_feature_edge.capacity() + point_sum.capacity() * sizeof(Vec3) + point_count.capacity() * sizeof(int) +
+    return is_feature_edge.capacity() + point_slot.capacity() * sizeof(Compact_index) +
+           point_sum.capacity() * sizeof(Vec3) + point_count.capacity() * sizeof(int) +
            dual_vertices.capacity() * sizeof(Vec3) + (similarity.capacity() + award.capacity()) * sizeof(double);
   }
 };
@@ -90,7 +123,8 @@ struct Edge_weight_terms
   // The metrics of every face, then the dual vertices and terms of `f` (whose feature
   // edges and points are set). `curvature_scale`: the length by which curvatures are
   // multiplied before gamma applies.
-  static void compute(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin, double gamma,
+  static void compute(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+                      const std::vector<Vec3>& points, double gamma,
                       double curvature_scale, std::vector<Triangle_metric>& metrics, Feature_terms& f)
   {
     const TriangleMesh& tm = idx.mesh();
@@ -102,31 +136,31 @@ struct Edge_weight_terms
       auto h = halfedge(idx.face_at(i), tm);
       metrics[i] = triangle_metric(vin[idx.id(source(h, tm))], vin[idx.id(target(h, tm))],
                                    vin[idx.id(target(next(h, tm), tm))], gamma, curvature_scale);
-      f.dual_vertices[i] = dual_vertex(idx, vin, f, i);
+      f.dual_vertices[i] = dual_vertex(idx, points, f, i);
     }
     f.similarity.assign(ne, 0.);
     f.award.assign(ne, 0.);
     for(std::size_t e = 0; e < ne; ++e)
-      edge_terms(idx, vin, metrics, f, e);
+      edge_terms(idx, points, metrics, f, e);
   }
 
   // After the features of some edges changed (a sketch): the dual vertices of `faces`
   // and the terms of their edges.
-  static void update_faces(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+  static void update_faces(const Indexing& idx, const std::vector<Vec3>& points,
                            const std::vector<Triangle_metric>& metrics, Feature_terms& f,
                            const std::vector<std::size_t>& faces)
   {
     const TriangleMesh& tm = idx.mesh();
     for(std::size_t i : faces)
-      f.dual_vertices[i] = dual_vertex(idx, vin, f, i);
+      f.dual_vertices[i] = dual_vertex(idx, points, f, i);
     for(std::size_t i : faces)
       for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(i), tm), tm))
-        edge_terms(idx, vin, metrics, f, idx.edge_id(h));
+        edge_terms(idx, points, metrics, f, idx.edge_id(h));
   }
 
   // Dual vertex: centroid of the feature points on the face's feature edges, if any (a
   // feature edge without located points contributes its midpoint), else the centroid.
-  static Vec3 dual_vertex(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+  static Vec3 dual_vertex(const Indexing& idx, const std::vector<Vec3>& points,
                           const Feature_terms& ft, std::size_t f)
   {
     const TriangleMesh& tm = idx.mesh();
@@ -134,17 +168,17 @@ struct Edge_weight_terms
     int count = 0;
     for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
     {
-      centroid += vin[idx.id(target(h, tm))].p / 3.;
+      centroid += points[idx.id(target(h, tm))] / 3.;
       const std::size_t e = idx.edge_id(h);
       if(!ft.is_feature_edge[e]) continue;
-      sum += ft.point_count[e] > 0 ? Vec3(ft.point_sum[e] / ft.point_count[e])
-                                   : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
+      sum += ft.has_points(e) ? ft.mean_point(e)
+                                   : Vec3(0.5 * (points[idx.id(source(h, tm))] + points[idx.id(target(h, tm))]));
       ++count;
     }
     return count > 0 ? Vec3(sum / count) : centroid;
   }
 
-  static void edge_terms(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
+  static void edge_terms(const Indexing& idx, const std::vector<Vec3>& points,
                          const std::vector<Triangle_metric>& metrics, Feature_terms& ft, std::size_t e)
   {
     const TriangleMesh& tm = idx.mesh();
@@ -163,9 +197,9 @@ struct Edge_weight_terms
     // midpoint) takes the place of the dual segment.
     const std::size_t f = (f1 != Indexing::npos) ? f1 : f2;
     if(f == Indexing::npos) return; // an isolated edge: no face, weight 0
-    const Vec3 end = ft.point_count[e] > 0
-                       ? Vec3(ft.point_sum[e] / ft.point_count[e])
-                       : Vec3(0.5 * (vin[idx.id(source(h, tm))].p + vin[idx.id(target(h, tm))].p));
+    const Vec3 end = ft.has_points(e)
+                       ? ft.mean_point(e)
+                       : Vec3(0.5 * (points[idx.id(source(h, tm))] + points[idx.id(target(h, tm))]));
     const Vec3 w = end - ft.dual_vertices[f];
     ft.similarity[e] = metrics[f].anisotropic(w);
     ft.award[e] = metrics[f].euclidean(w);

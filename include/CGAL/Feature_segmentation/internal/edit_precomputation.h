@@ -95,7 +95,7 @@ public:
   std::pair<std::size_t, std::size_t> ties_of(std::size_t input_edge) const
   {
     if(tie_begin.empty()) return { 0, 0 };
-    return { first_tie + tie_begin[input_edge], first_tie + tie_begin[input_edge + 1] };
+    return { first_tie + std::size_t(tie_begin[input_edge]), first_tie + std::size_t(tie_begin[input_edge + 1]) };
   }
   // The ties of the input edge of a working edge (a crease's ties), or the edge itself.
   std::pair<std::size_t, std::size_t> ties_of_working_edge(std::size_t e) const
@@ -117,7 +117,7 @@ public:
   Crease_cut<TriangleMesh> cut;
   std::unique_ptr<Segmentation_data<TriangleMesh> > data; // on the working mesh; its features: the initial ones
   std::size_t first_tie = 0;          // index of the first tie in the weight terms
-  std::vector<std::size_t> tie_begin; // per input edge: its ties, CSR (empty without cut)
+  std::vector<Compact_index> tie_begin; // per input edge: its ties, CSR (empty without cut)
   Feature_lines<TriangleMesh> lines;  // on the working mesh, without sketches and creases
   std::vector<double> alpha_e;        // the initial alpha_e of every edge and tie
   bool anisotropic = true, reduced = true;
@@ -215,9 +215,12 @@ private:
     if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
       for(std::size_t e = 0; e < a.size(); ++e) a[e] = user_alpha(cut.input_edge[e]);
     first_tie = d.edge_vertices.size();
-    tie_begin.assign(in.number_of_edges() + 1, 0);
-    for(const Crease_tie& t : cut.ties) ++tie_begin[t.crease_edge + 1];
-    for(std::size_t e = 0; e < in.number_of_edges(); ++e) tie_begin[e + 1] += tie_begin[e];
+    {
+      std::vector<std::size_t> begin(in.number_of_edges() + 1, 0);
+      for(const Crease_tie& t : cut.ties) ++begin[t.crease_edge + 1];
+      for(std::size_t e = 0; e < in.number_of_edges(); ++e) begin[e + 1] += begin[e];
+      tie_begin.assign(begin.begin(), begin.end());
+    }
     {
       // exactly the room the ties take (a growing vector would keep up to twice that)
       const std::size_t total = first_tie + cut.ties.size();

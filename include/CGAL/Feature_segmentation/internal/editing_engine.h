@@ -155,8 +155,7 @@ public:
       std::set<std::size_t> touched;
       for(const Sketch_crossing& c : crossings)
       {
-        features->point_sum[c.edge] += c.point;
-        ++features->point_count[c.edge];
+        features->add_point(c.edge, c.point);
         features->is_feature_edge[c.edge] = 1;
         (*alpha_e)[c.edge] = (std::max)((*alpha_e)[c.edge], sketch_alpha);
         auto h = halfedge(d.idx.edge_at(c.edge), tm);
@@ -167,7 +166,7 @@ public:
       }
       std::sort(faces.begin(), faces.end());
       faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-      Edge_weight_terms<TriangleMesh>::update_faces(d.idx, d.vin, *d.metrics, *features, faces);
+      Edge_weight_terms<TriangleMesh>::update_faces(d.idx, d.points, *d.metrics, *features, faces);
       features->number_of_feature_edges = p.count_feature_edges(*features);
       // redo the oversegmentation inside the touched patches
       std::vector<char> region(labels.size(), 0);
@@ -225,7 +224,7 @@ public:
     {
       const std::size_t v = idx.id(source(hs[k], tm)); // corner k: the source of edge k
       l[k] = labels[v];
-      p[k] = d.vin[v].p;
+      p[k] = d.points[v];
     }
     if(l[0] == l[1] && l[1] == l[2]) return l[0];
     const std::vector<Eigen::Vector3d>& dual = s.features->dual_vertices;
@@ -234,8 +233,8 @@ public:
       if(l[k] == l[(k + 1) % 3]) continue;
       // as Boundary_state::initialize, in the orientation of the edge's own halfedge
       const auto eh = halfedge(edge(hs[k], tm), tm);
-      const Eigen::Vector3d& a = d.vin[idx.id(source(eh, tm))].p;
-      const Eigen::Vector3d& b = d.vin[idx.id(target(eh, tm))].p;
+      const Eigen::Vector3d& a = d.points[idx.id(source(eh, tm))];
+      const Eigen::Vector3d& b = d.points[idx.id(target(eh, tm))];
       const std::size_t f0 = idx.face_id(eh), f1 = idx.face_id(opposite(eh, tm));
       const double t = (f0 == B::npos || f1 == B::npos) ? 0.5 : B::initial_edge_t(a, b, dual[f0], dual[f1]);
       edge_point[k] = (1 - t) * a + t * b;

@@ -63,7 +63,7 @@ template <typename TriangleMesh>
 double mean_edge_length(const Segmentation_data<TriangleMesh>& data)
 {
   double sum = 0;
-  for(const auto& ev : data.edge_vertices) sum += (data.vin[ev.first].p - data.vin[ev.second].p).norm();
+  for(const auto& ev : data.edge_vertices) sum += (data.points[ev.first] - data.points[ev.second]).norm();
   return data.edge_vertices.empty() ? 0. : sum / double(data.edge_vertices.size());
 }
 
@@ -74,9 +74,9 @@ double distance_to_face(const Segmentation_data<TriangleMesh>& data, const Sketc
   const auto& idx = data.idx;
   const TriangleMesh& tm = idx.mesh();
   auto h = halfedge(idx.face_at(s.face), tm);
-  const Eigen::Vector3d& a = data.vin[idx.id(source(h, tm))].p;
-  const Eigen::Vector3d& b = data.vin[idx.id(target(h, tm))].p;
-  const Eigen::Vector3d& c = data.vin[idx.id(target(next(h, tm), tm))].p;
+  const Eigen::Vector3d& a = data.points[idx.id(source(h, tm))];
+  const Eigen::Vector3d& b = data.points[idx.id(target(h, tm))];
+  const Eigen::Vector3d& c = data.points[idx.id(target(next(h, tm), tm))];
   return (closest_point_on_triangle(s.point, a, b, c) - s.point).norm();
 }
 
@@ -90,14 +90,14 @@ std::vector<Sketch_crossing> walk_sketch(const Segmentation_data<TriangleMesh>& 
   auto corner = [&](std::size_t f, int i) {
     auto h = halfedge(idx.face_at(f), tm);
     for(int k = 0; k < i; ++k) h = next(h, tm);
-    return data.vin[idx.id(target(h, tm))].p;
+    return data.points[idx.id(target(h, tm))];
   };
   auto distance = [&](std::size_t f, const Vec3& p) {
     return (closest_point_on_triangle(p, corner(f, 0), corner(f, 1), corner(f, 2)) - p).squaredNorm();
   };
   auto edge_point = [&](std::size_t e, const Vec3& p) {
-    const Vec3& a = data.vin[data.edge_vertices[e].first].p;
-    const Vec3& b = data.vin[data.edge_vertices[e].second].p;
+    const Vec3& a = data.points[data.edge_vertices[e].first];
+    const Vec3& b = data.points[data.edge_vertices[e].second];
     const double l2 = (b - a).squaredNorm();
     const double t = l2 > 0 ? std::max(0., std::min(1., (p - a).dot(b - a) / l2)) : 0.;
     return Vec3(a + t * (b - a));
