@@ -18,6 +18,7 @@
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/IO/write_boundaries.h>
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
+#include <CGAL/Feature_segmentation/IO/write_refined_segmentation.h>
 #include <CGAL/Feature_segmentation/IO/write_segmentation.h>
 #include <CGAL/Feature_segmentation/Watershed_distance.h>
 #include <CGAL/Feature_segmentation/boundary_curves.h>
@@ -344,27 +345,30 @@ public:
     segmentation->face_patches(boundaries, face_patch);
     const File_patches file = file_patches(boundaries);
 
-    Mesh refined;
-    auto refined_patch = refined.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
-    results.number_of_split_faces = timer.run("refinement", [&]() {
-      return FS::refine_mesh_along_boundaries(boundaries, refined, refined_patch);
-    });
-    results.number_of_refined_vertices = num_vertices(refined);
-    results.number_of_refined_faces = num_faces(refined);
-
-    results.number_of_patches = segmentation->number_of_patches();
-    results.cut_cost = segmentation->cut_cost();
     const sfs::path dir(options.output_dir);
     // summary.json marks a complete set of outputs: a previous run's goes first, and the
     // new one is written last.
     sfs::remove(dir / "summary.json", ec);
-    // The files are independent: written by TBB's threads, one file per task.
+    // The refined mesh goes to its file straight from the refinement (stage
+    // "refinement"): the mesh itself would double the memory the refinement takes.
+    const FS::Refined_segmentation_sizes refined = timer.run("refinement", [&]() {
+      FS::Refined_segmentation_sizes sizes;
+      write_file(dir / "segmentation_refined.ply",
+                 [&](std::ostream& os) { sizes = FS::write_PLY_refined_segmentation(os, boundaries); });
+      return sizes;
+    });
+    results.number_of_split_faces = refined.number_of_split_faces;
+    results.number_of_refined_vertices = refined.number_of_vertices;
+    results.number_of_refined_faces = refined.number_of_faces;
+
+    results.number_of_patches = segmentation->number_of_patches();
+    results.cut_cost = segmentation->cut_cost();
+    // The other files are independent: written by TBB's threads, one file per task.
     const std::vector<std::pair<const char*, std::function<void(std::ostream&)> > > files = {
       { "feature_lines.polylines.txt", [&](std::ostream& os) { FS::write_polylines(os, working_mesh, lines); } },
       { "feature_lines.obj", [&](std::ostream& os) { FS::write_OBJ_lines(os, working_mesh, lines); } },
       { "segmentation.ply", [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); } },
       { "boundaries.polylines.txt", [&](std::ostream& os) { FS::write_boundary_polylines(os, boundaries); } },
-      { "segmentation_refined.ply", [&](std::ostream& os) { FS::write_PLY_segmentation(os, refined, refined_patch); } },
       { "face_patches.txt",
         [&](std::ostream& os) {
           FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.faces.size()),

@@ -6,6 +6,7 @@
 #include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
 #include <CGAL/Feature_segmentation/face_patches.h>
+#include <CGAL/Feature_segmentation/IO/write_refined_segmentation.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -135,9 +137,18 @@ void check_refinement(const FS::Patch_boundaries<Mesh>& b, std::size_t expected_
   SM out;
   auto fp = out.add_property_map<SM::Face_index, std::size_t>("f:patch", 0).first;
   auto constrained = out.add_property_map<SM::Edge_index, bool>("e:constrained", false).first;
-  FS::refine_mesh_along_boundaries(b, out, fp,
-                                   FS::parameters::snapping_ratio(delta).edge_is_constrained_map(constrained));
+  const std::size_t split = FS::refine_mesh_along_boundaries(
+    b, out, fp, FS::parameters::snapping_ratio(delta).edge_is_constrained_map(constrained));
   BOOST_TEST(CGAL::is_valid_polygon_mesh(out));
+  // written without the mesh: the same file, byte for byte, and the same sizes
+  std::ostringstream from_mesh, direct;
+  FS::write_PLY_segmentation(from_mesh, out, fp);
+  const FS::Refined_segmentation_sizes sizes =
+    FS::write_PLY_refined_segmentation(direct, b, FS::parameters::snapping_ratio(delta));
+  BOOST_TEST(direct.str() == from_mesh.str());
+  BOOST_TEST(sizes.number_of_vertices == num_vertices(out));
+  BOOST_TEST(sizes.number_of_faces == num_faces(out));
+  BOOST_TEST(sizes.number_of_split_faces == split);
   BOOST_TEST(CGAL::is_triangle_mesh(out));
   auto cc = out.add_property_map<SM::Face_index, std::size_t>("f:cc", 0).first;
   const std::size_t ncc = CGAL::Polygon_mesh_processing::connected_components(
@@ -402,6 +413,8 @@ BOOST_AUTO_TEST_CASE(invalid_values)
   SM out;
   auto ofp = out.add_property_map<SM::Face_index, int>("f:patch", 0).first;
   BOOST_CHECK_THROW(FS::refine_mesh_along_boundaries(b, out, ofp, FS::parameters::snapping_ratio(0.5)), FS::Invalid_input);
+  std::ostringstream os;
+  BOOST_CHECK_THROW(FS::write_PLY_refined_segmentation(os, b, FS::parameters::snapping_ratio(-0.1)), FS::Invalid_input);
   auto neg = m.add_property_map<SM::Vertex_index, int>("v:neg", -1).first;
   BOOST_CHECK_THROW(FS::compute_patch_boundaries(m, neg), FS::Invalid_input);
 }

@@ -60,6 +60,22 @@ std::size_t majority_face_patches(const Patch_boundaries<TriangleMesh>& boundari
   return crossed;
 }
 
+namespace internal {
+
+// The named parameter `snapping_ratio` of the refinement, checked.
+template <typename NamedParameters>
+double snapping_ratio(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double delta = choose_parameter(get_parameter(np, internal_np::snapping_ratio), 0.1);
+  if(!(delta >= 0 && delta < 0.5))
+    throw Invalid_input("snapping_ratio must be in [0, 0.5) (got " + std::to_string(delta) + ")");
+  return delta;
+}
+
+} // namespace internal
+
 /// \ingroup PkgFeatureSegmentationBoundaries
 /// Writes into `out` a refined copy of the mesh in which the boundaries are chains of
 /// edges, with the exact patch of every face.
@@ -112,11 +128,7 @@ std::size_t refine_mesh_along_boundaries(const Patch_boundaries<TriangleMesh>& b
   typedef typename boost::property_traits<Out_vpm>::value_type Out_point;
   typedef typename boost::property_traits<FacePatchMap>::value_type Id;
 
-  const double delta = choose_parameter(get_parameter(np, internal_np::snapping_ratio), 0.1);
-  if(!(delta >= 0 && delta < 0.5))
-    throw Invalid_input("snapping_ratio must be in [0, 0.5) (got " + std::to_string(delta) + ")");
-
-  const internal::Refinement r = internal::refine_along_boundaries(boundaries.state(), delta);
+  const internal::Refinement r = internal::refine_along_boundaries(boundaries.state(), internal::snapping_ratio(np));
 
   {
     // room for what is added (no doubling of the mesh's arrays): E = (3F + B) / 2, and a

@@ -43,7 +43,6 @@ inline void write_coordinates(std::ostream& os, const std::array<double, 3>& p)
 template <typename TriangleMesh>
 bool write_boundary_polylines(std::ostream& os, const Patch_boundaries<TriangleMesh>& boundaries)
 {
-  internal::Full_precision_guard guard(os);
   for(const Boundary_curve<TriangleMesh>& curve : boundaries.curves())
   {
     const bool repeat_first = curve.is_closed() && !curve.points.empty();

@@ -18,36 +18,11 @@
 #include <cstddef>
 #include <ios>
 #include <charconv>
-#include <limits>
 #include <ostream>
 
 namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
-
-// Sets full precision on a stream and restores the caller's settings on exit.
-class Full_precision_guard
-{
-public:
-  explicit Full_precision_guard(std::ostream& os)
-    : m_os(os), m_flags(os.flags()), m_precision(os.precision())
-  {
-    m_os.unsetf(std::ios::floatfield);
-    m_os.precision(std::numeric_limits<double>::max_digits10);
-  }
-  ~Full_precision_guard()
-  {
-    m_os.flags(m_flags);
-    m_os.precision(m_precision);
-  }
-  Full_precision_guard(const Full_precision_guard&) = delete;
-  Full_precision_guard& operator=(const Full_precision_guard&) = delete;
-
-private:
-  std::ostream& m_os;
-  std::ios::fmtflags m_flags;
-  std::streamsize m_precision;
-};
 
 // The shortest text that reads back as exactly x (std::to_chars), a fraction of the
 // time of a stream's 17 digits.
@@ -82,7 +57,6 @@ inline const char* feature_line_type_name(Feature_line_type type)
 template <typename TriangleMesh, typename VPM>
 bool write_polylines(std::ostream& os, const TriangleMesh& tm, const Feature_lines<TriangleMesh>& lines, VPM vpm)
 {
-  Full_precision_guard guard(os);
   for(const Feature_line<TriangleMesh>& line : lines.lines)
   {
     const bool repeat_first = line.is_closed && !line.points.empty();
@@ -105,7 +79,6 @@ bool write_polylines(std::ostream& os, const TriangleMesh& tm, const Feature_lin
 template <typename TriangleMesh, typename VPM>
 bool write_OBJ_lines(std::ostream& os, const TriangleMesh& tm, const Feature_lines<TriangleMesh>& lines, VPM vpm)
 {
-  Full_precision_guard guard(os);
   os << "# feature lines: " << lines.lines.size() << '\n';
   std::size_t next_index = 1; // OBJ indices start at 1 and run over the whole file
   for(std::size_t i = 0; i < lines.lines.size(); ++i)

@@ -21,6 +21,7 @@
 #include <CGAL/property_map.h>
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/range/adaptor/transformed.hpp>
 
 #include <charconv>
 #include <cstddef>
@@ -75,6 +76,54 @@ CGAL::IO::Color segmentation_colour(Integer id)
                          static_cast<unsigned char>(b));
 }
 
+namespace internal {
+
+// The header of a segmentation's PLY file (see write_PLY_segmentation()).
+inline void write_PLY_segmentation_header(std::ostream& os, std::size_t number_of_vertices,
+                                          std::size_t number_of_faces)
+{
+  os << "ply\n"
+     << "format ascii 1.0\n"
+     << "comment feature-aligned segmentation: patch_id and colour per face\n"
+     << "element vertex " << number_of_vertices << '\n'
+     << "property double x\n"
+     << "property double y\n"
+     << "property double z\n"
+     << "element face " << number_of_faces << '\n'
+     << "property list uchar int vertex_indices\n"
+     << "property int patch_id\n"
+     << "property uchar red\n"
+     << "property uchar green\n"
+     << "property uchar blue\n"
+     << "end_header\n";
+}
+
+// A face's line: its degree, its vertex indices, its patch id and colour. The line is
+// made in `line` (a buffer kept between faces), its numbers by std::to_chars.
+template <typename IndexRange, typename Id>
+void write_PLY_segmentation_face(std::ostream& os, std::vector<char>& line, std::size_t degree,
+                                 const IndexRange& vertex_indices, Id id)
+{
+  auto put_number = [&line](long long x, char after) {
+    char text[24];
+    const char* end = std::to_chars(text, text + sizeof(text), x).ptr;
+    line.insert(line.end(), static_cast<const char*>(text), end);
+    line.push_back(after);
+  };
+  line.clear();
+  put_number(static_cast<long long>(degree), ' ');
+  for(const auto i : vertex_indices)
+    put_number(static_cast<long long>(i), ' ');
+  const CGAL::IO::Color c = segmentation_colour(id);
+  put_number(static_cast<long long>(id), ' ');
+  put_number(c.red(), ' ');
+  put_number(c.green(), ' ');
+  put_number(c.blue(), '\n');
+  os.write(line.data(), std::streamsize(line.size()));
+}
+
+} // namespace internal
+
 /// \ingroup PkgFeatureSegmentationIO
 /// Writes `tm` as an ASCII PLY file whose faces carry their patch: the vertices
 /// (`x`, `y`, `z` as doubles at full precision) in the order of `vertices(tm)`, then the
@@ -111,48 +160,19 @@ bool write_PLY_segmentation(std::ostream& os, const TriangleMesh& tm,
   for(vertex_descriptor v : vertices(tm))
     put(vim, v, next_index++);
 
-  internal::Full_precision_guard guard(os);
-  os << "ply\n"
-     << "format ascii 1.0\n"
-     << "comment feature-aligned segmentation: patch_id and colour per face\n"
-     << "element vertex " << vertices(tm).size() << '\n'
-     << "property double x\n"
-     << "property double y\n"
-     << "property double z\n"
-     << "element face " << faces(tm).size() << '\n'
-     << "property list uchar int vertex_indices\n"
-     << "property int patch_id\n"
-     << "property uchar red\n"
-     << "property uchar green\n"
-     << "property uchar blue\n"
-     << "end_header\n";
+  internal::write_PLY_segmentation_header(os, vertices(tm).size(), faces(tm).size());
   for(vertex_descriptor v : vertices(tm))
   {
     internal::write_coordinates(os, get(vpm, v));
     os << '\n';
   }
-  // a face's line is made in a buffer, its numbers by std::to_chars
   std::vector<char> line;
-  auto put_number = [&line](long long x, char after) {
-    char text[24];
-    const char* end = std::to_chars(text, text + sizeof(text), x).ptr;
-    line.insert(line.end(), static_cast<const char*>(text), end);
-    line.push_back(after);
-  };
   for(face_descriptor f : faces(tm))
-  {
-    line.clear();
-    put_number(static_cast<long long>(CGAL::halfedges_around_face(halfedge(f, tm), tm).size()), ' ');
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      put_number(static_cast<long long>(get(vim, v)), ' ');
-    const auto id = get(face_patch_map, f);
-    const CGAL::IO::Color c = segmentation_colour(id);
-    put_number(static_cast<long long>(id), ' ');
-    put_number(c.red(), ' ');
-    put_number(c.green(), ' ');
-    put_number(c.blue(), '\n');
-    os.write(line.data(), std::streamsize(line.size()));
-  }
+    internal::write_PLY_segmentation_face(
+      os, line, CGAL::halfedges_around_face(halfedge(f, tm), tm).size(),
+      boost::adaptors::transform(CGAL::vertices_around_face(halfedge(f, tm), tm),
+                                 [&vim](vertex_descriptor v) { return get(vim, v); }),
+      get(face_patch_map, f));
   return os.good();
 }
 
