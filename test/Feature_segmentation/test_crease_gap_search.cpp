@@ -11,6 +11,8 @@
 
 #include "test_meshes.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -139,6 +141,60 @@ BOOST_AUTO_TEST_CASE(a_zero_length_edge_is_never_crossed_whole)
   std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < num_edges(m); ++e) candidates.push_back(e);
   check_hierarchy_against_faces(m, candidates, 20., 1);
+}
+
+// Only the candidates near a band edge are searched: on a grid folded by 30 degrees along
+// u = 0.5 (the creases) and by 16 degrees along v = 0.7 (band edges, 16 >= 0.75 * 20),
+// the crease edges within a ball's radius of the band line are, and no other crease
+// edge's ball holds any band length; a cube has no band edge, so none is searched.
+BOOST_AUTO_TEST_CASE(only_candidates_near_band_edges_are_searched)
+{
+  const SM m = fs_test::to_mesh<SM>(fs_test::parametric_grid(60, 60, false, false, [](double u, double v) {
+    const double pi = 3.14159265358979323846;
+    const double t = std::tan(15. * pi / 180.), t2 = std::tan(16. * pi / 180.);
+    return std::array<double, 3>{ u, v, -t * std::abs(u - 0.5) - t2 * (std::max)(0., v - 0.7) };
+  }));
+  const Indexing idx(m);
+  const std::vector<double> angle = raw_angles(idx, m);
+  const auto vpm = get(CGAL::vertex_point, m);
+  std::vector<std::size_t> candidates;
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    if(angle[e] >= 20) candidates.push_back(e);
+  BOOST_REQUIRE(candidates.size() == 60u); // the crease line u = 0.5, 60 grid edges
+  const std::vector<std::size_t> near =
+    FS::internal::candidates_near_band_edges(idx, vpm, angle, angle, 20., candidates);
+  const auto lengths = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, 20., candidates, false);
+  const double r = FS::internal::Crease_gap_search<SM, decltype(vpm)>(idx, vpm, angle, angle, 20.).radius();
+  std::size_t with_band = 0;
+  for(std::size_t i = 0; i < candidates.size(); ++i)
+  {
+    const bool searched = std::find(near.begin(), near.end(), candidates[i]) != near.end();
+    with_band += lengths[i].band > 0;
+    if(!searched) BOOST_TEST(lengths[i].band == 0.);
+    // below the band line (v < 0.7, where the surface is z = -t |u - 0.5|), the nearest
+    // band point of a crease edge's midpoint is the folds' crossing (0.5, 0.7, 0): it is
+    // searched exactly when 0.7 - v is less than the ball's radius (up to the 1e-6)
+    const auto h = halfedge(idx.edge_at(candidates[i]), m);
+    const double v = 0.5 * (m.point(source(h, m)).y() + m.point(target(h, m)).y());
+    if(v < 0.7)
+    {
+      if(0.7 - v < r * (1 - 1e-6)) BOOST_TEST(searched);
+      if(0.7 - v > r * (1 + 1e-5)) BOOST_TEST(!searched);
+    }
+  }
+  BOOST_TEST(with_band > 0u);
+  BOOST_TEST(near.size() < candidates.size());
+
+  std::vector<int> side;
+  const SM cube = fs_test::to_mesh<SM>(fs_test::box(4., 4., 4., 10, side));
+  const Indexing cidx(cube);
+  const std::vector<double> cangle = raw_angles(cidx, cube);
+  std::vector<std::size_t> ccandidates;
+  for(std::size_t e = 0; e < cidx.number_of_edges(); ++e)
+    if(cangle[e] >= 20) ccandidates.push_back(e);
+  BOOST_TEST(ccandidates.size() == 120u); // 12 cube edges of 10 mesh edges
+  BOOST_TEST(FS::internal::candidates_near_band_edges(cidx, get(CGAL::vertex_point, cube), cangle, cangle, 20.,
+                                                      ccandidates).empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -21,6 +21,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <cstdint>
 #include <map>
 #include <set>
 #include <tuple>
@@ -378,7 +379,7 @@ BOOST_AUTO_TEST_CASE(filter_stops_after_the_round_that_makes_the_normals_smooth)
   std::vector<Eigen::Vector3d> normal, centroid;
   std::vector<double> area;
   FS::internal::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
-  std::vector<std::size_t> begin, ring;
+  std::vector<std::uint32_t> begin, ring;
   FS::internal::vertex_adjacent_faces(idx, begin, ring);
   const double r0 = FS::internal::normal_roughness(normal, begin, ring);
   const double stop = 0.1 * r0;

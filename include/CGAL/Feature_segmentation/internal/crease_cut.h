@@ -28,8 +28,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <numeric>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -64,26 +66,29 @@ void face_geometry(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, std::vector<
 }
 
 // The faces that share a vertex with each face (itself included), as offsets into one
-// array (CSR), in a deterministic order.
+// array (CSR), in a deterministic order; 32-bit ids (13 per face on a regular mesh).
 template <typename TriangleMesh>
-void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<std::size_t>& begin,
-                           std::vector<std::size_t>& faces)
+void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<std::uint32_t>& begin,
+                           std::vector<std::uint32_t>& faces)
 {
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces();
   begin.assign(nf + 1, 0);
   faces.clear();
-  std::vector<std::size_t> ring;
+  faces.reserve(13 * nf + 1);
+  std::vector<std::uint32_t> ring;
   for(std::size_t f = 0; f < nf; ++f)
   {
     ring.clear();
     for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
       for(auto g : CGAL::faces_around_target(h, tm))
-        if(g != boost::graph_traits<TriangleMesh>::null_face()) ring.push_back(idx.id(g));
+        if(g != boost::graph_traits<TriangleMesh>::null_face()) ring.push_back(std::uint32_t(idx.id(g)));
     std::sort(ring.begin(), ring.end());
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
     faces.insert(faces.end(), ring.begin(), ring.end());
-    begin[f + 1] = faces.size();
+    if(faces.size() >= std::size_t(UINT32_MAX))
+      throw std::length_error("the mesh has too many faces for the crease detection's 32-bit face rings");
+    begin[f + 1] = std::uint32_t(faces.size());
   }
 }
 
@@ -102,8 +107,8 @@ constexpr double crease_filter_roughness = 0.01;
 // along a cylinder's axis), even next to creases and on coarse cylinders: at most
 // 0.0085 on the 14 CAD parts of the evaluation; noise of 0.1% of the diagonal along the
 // normals makes it 0.035 to 0.1.
-inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std::vector<std::size_t>& begin,
-                               const std::vector<std::size_t>& ring)
+inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std::vector<std::uint32_t>& begin,
+                               const std::vector<std::uint32_t>& ring)
 {
   const std::size_t nf = n.size();
   if(nf == 0) return 0.;
@@ -129,8 +134,8 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
                                                         double initial_roughness,
                                                         const std::vector<double>& area,
                                                         const std::vector<Eigen::Vector3d>& centroid,
-                                                        const std::vector<std::size_t>& begin,
-                                                        const std::vector<std::size_t>& ring,
+                                                        const std::vector<std::uint32_t>& begin,
+                                                        const std::vector<std::uint32_t>& ring,
                                                         int max_iterations, double sigma_r, double stop_roughness,
                                                         bool parallel = false)
 {
@@ -248,7 +253,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   std::vector<Eigen::Vector3d> normal, centroid;
   std::vector<double> area;
   face_geometry(idx, vpm, normal, area, centroid);
-  std::vector<std::size_t> begin, ring;
+  std::vector<std::uint32_t> begin, ring;
   vertex_adjacent_faces(idx, begin, ring);
   const std::vector<double> raw = dihedral_angles(idx, normal);
   const double raw_roughness = normal_roughness(normal, begin, ring);

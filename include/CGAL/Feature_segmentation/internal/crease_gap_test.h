@@ -7,6 +7,11 @@
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 
+#include <CGAL/assertions.h>
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
 
@@ -23,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -54,6 +60,33 @@ struct Gap_lengths
 {
   double crease = 0, band = 0;
 };
+
+// Whether an edge is in the band below the creases: bending by less than crease_angle,
+// but by crease_gap_band * crease_angle or more on the band's angles.
+inline bool is_crease_gap_band_edge(double angle, double band_angle, double crease_angle)
+{
+  return angle < crease_angle && band_angle >= crease_gap_band * crease_angle;
+}
+
+// The radius of the gap test's balls (crease_gap_radius of the diagonal of the bounding
+// box, at least two mean edge lengths: on a coarse mesh the ball must still reach the
+// candidate's neighbours), from the vertices and the edges' two vertices.
+template <typename Point, typename Ends>
+double crease_gap_ball_radius(const std::vector<Point>& points, const std::vector<Ends>& ends)
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+  double mean_edge = 0;
+  for(const auto& e : ends)
+  {
+    const Eigen::Vector3d& a = points[e[0]];
+    const Eigen::Vector3d& b = points[e[1]];
+    lo = lo.cwiseMin(a).cwiseMin(b);
+    hi = hi.cwiseMax(a).cwiseMax(b);
+    mean_edge += (b - a).norm();
+  }
+  mean_edge /= double((std::max)(ends.size(), std::size_t(1)));
+  return (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
+}
 
 // The search behind the gap test. The ball of a candidate holds a fixed share of the
 // surface, so a search face by face costs the faces of the ball, which grow with the
@@ -91,32 +124,34 @@ public:
   // `max_levels` 0: the search face by face.
   Crease_gap_search(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
                     const std::vector<double>& band_angle, double crease_angle, int max_levels = 8)
-    : m_idx(idx), m_angle(angle), m_band_angle(band_angle), m_crease_angle(crease_angle)
+    : m_idx(idx), m_crease_angle(crease_angle)
   {
     const TriangleMesh& tm = idx.mesh();
-    const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
-    m_end0.resize(ne);
-    m_end1.resize(ne);
+    const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges(), nv = idx.number_of_vertices();
+    if((std::max)({ nf, ne, nv }) >= std::size_t(none))
+      throw std::length_error("the crease gap test stores element ids in 32 bits");
+    // what the search reads per edge, compactly (it visits millions of edges in no
+    // particular order): its two vertices and what its angles make it
+    m_points.resize(nv);
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const auto& p = get(vpm, idx.vertex_at(v));
+      m_points[v] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    m_ends.resize(ne);
+    m_kind.resize(ne);
     m_owner.assign(ne, none);
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-    double mean_edge = 0;
     for(std::size_t e = 0; e < ne; ++e)
     {
       const auto h = halfedge(idx.edge_at(e), tm);
-      const auto& p = get(vpm, source(h, tm));
-      const auto& q = get(vpm, target(h, tm));
-      m_end0[e] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-      m_end1[e] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-      lo = lo.cwiseMin(m_end0[e]).cwiseMin(m_end1[e]);
-      hi = hi.cwiseMax(m_end0[e]).cwiseMax(m_end1[e]);
-      mean_edge += (m_end1[e] - m_end0[e]).norm();
+      m_ends[e] = { Index(idx.id(source(h, tm))), Index(idx.id(target(h, tm))) };
+      m_kind[e] = is_crease_gap_band_edge(angle[e], band_angle[e], crease_angle) ? BAND
+                  : angle[e] >= crease_angle ? CREASE : OTHER;
       std::size_t f = idx.face_id(h);
       if(f == idx.npos) f = idx.face_id(opposite(h, tm));
       if(f != idx.npos) m_owner[e] = Index(f);
     }
-    mean_edge /= double((std::max)(ne, std::size_t(1)));
-    // on a coarse mesh the ball must still reach the candidate's neighbours
-    m_radius = (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
+    m_radius = crease_gap_ball_radius(m_points, m_ends);
     m_adj.resize(nf);
     for(std::size_t f = 0; f < nf; ++f)
     {
@@ -137,18 +172,22 @@ public:
   // A thread's stamps and queue.
   struct Work_space
   {
-    std::vector<std::size_t> face_stamp, edge_stamp, queue;
-    std::vector<std::vector<std::size_t> > inside_stamp, done_stamp; // per level, per cluster
+    // stamps: the number of the search (32 bits: the search numbers stay below `none`)
+    std::vector<Index> face_stamp, edge_stamp;
+    std::vector<std::size_t> queue;
+    std::vector<std::vector<Index> > inside_stamp, done_stamp; // per level, per cluster
     std::vector<std::vector<char> > inside;
   };
 
   // The lengths in the ball of the search numbered `stamp` (distinct per call with one
   // work space) around the midpoint of edge `e`, from its faces.
-  Gap_lengths lengths(std::size_t e, std::size_t stamp, Work_space& ws) const
+  Gap_lengths lengths(std::size_t e, std::size_t search_number, Work_space& ws) const
   {
+    CGAL_precondition(search_number < std::size_t(none));
+    const Index stamp = Index(search_number);
     prepare(ws);
     const TriangleMesh& tm = m_idx.mesh();
-    const Eigen::Vector3d c = 0.5 * (m_end0[e] + m_end1[e]);
+    const Eigen::Vector3d c = 0.5 * (end0(e) + end1(e));
     const double r_whole = m_radius * (1 - 1e-9); // a cluster inside this radius is inside the ball
     const std::size_t nl = m_levels.size();
     // whether cluster x of level l lies inside the ball, once per search
@@ -235,9 +274,12 @@ public:
 private:
   // The length of the part of edge x inside the ball around c: lengths of curves within
   // a ball, the same on a mesh and on its flat subdivision.
+  const Eigen::Vector3d& end0(std::size_t x) const { return m_points[m_ends[x][0]]; }
+  const Eigen::Vector3d& end1(std::size_t x) const { return m_points[m_ends[x][1]]; }
+
   double length_inside(std::size_t x, const Eigen::Vector3d& c) const
   {
-    const Eigen::Vector3d d = m_end1[x] - m_end0[x], m = m_end0[x] - c;
+    const Eigen::Vector3d d = end1(x) - end0(x), m = end0(x) - c;
     const double a = d.squaredNorm(), b = m.dot(d), k = m.squaredNorm() - m_radius * m_radius;
     const double disc = b * b - a * k;
     if(a == 0 || disc <= 0) return 0.;
@@ -246,29 +288,26 @@ private:
     return t1 > t0 ? (t1 - t0) * std::sqrt(a) : 0.;
   }
 
-  bool counts(std::size_t x) const
-  {
-    return m_angle[x] >= m_crease_angle || m_band_angle[x] >= crease_gap_band * m_crease_angle;
-  }
+  bool counts(std::size_t x) const { return m_kind[x] != OTHER; }
 
   void add(std::size_t x, double length, Gap_lengths& sum) const
   {
-    if(m_angle[x] >= m_crease_angle) sum.crease += length;
-    else if(m_band_angle[x] >= crease_gap_band * m_crease_angle) sum.band += length;
+    if(m_kind[x] == CREASE) sum.crease += length;
+    else if(m_kind[x] == BAND) sum.band += length;
   }
 
   void prepare(Work_space& ws) const
   {
     if(ws.face_stamp.size() == m_adj.size()) return;
-    ws.face_stamp.assign(m_adj.size(), std::size_t(-1));
-    ws.edge_stamp.assign(m_end0.size(), std::size_t(-1));
+    ws.face_stamp.assign(m_adj.size(), none);
+    ws.edge_stamp.assign(m_ends.size(), none);
     ws.inside_stamp.resize(m_levels.size());
     ws.done_stamp.resize(m_levels.size());
     ws.inside.resize(m_levels.size());
     for(std::size_t l = 0; l < m_levels.size(); ++l)
     {
-      ws.inside_stamp[l].assign(m_levels[l].radius.size(), std::size_t(-1));
-      ws.done_stamp[l].assign(m_levels[l].radius.size(), std::size_t(-1));
+      ws.inside_stamp[l].assign(m_levels[l].radius.size(), none);
+      ws.done_stamp[l].assign(m_levels[l].radius.size(), none);
       ws.inside[l].assign(m_levels[l].radius.size(), 0);
     }
   }
@@ -360,7 +399,7 @@ private:
         {
           if(m_owner[e] == none) continue;
           const Index x = L.parent[m_owner[e]];
-          const double length = (m_end1[e] - m_end0[e]).norm();
+          const double length = (end1(e) - end0(e)).norm();
           if(length == 0) L.has_zero_length_edge[x] = 1;
           add(e, length, L.lengths[x]);
         }
@@ -371,7 +410,7 @@ private:
         auto corners = [&](auto visit) {
           for(Index child : members[x])
             if(level == 0)
-              for(const auto& a : m_adj[child]) { visit(m_end0[a[1]], 0.); visit(m_end1[a[1]], 0.); }
+              for(const auto& a : m_adj[child]) { visit(end0(a[1]), 0.); visit(end1(a[1]), 0.); }
             else
               visit(below->center[child], below->radius[child]);
         };
@@ -422,11 +461,12 @@ private:
   }
 
   const Mesh_indexing<TriangleMesh>& m_idx;
-  const std::vector<double>& m_angle;
-  const std::vector<double>& m_band_angle;
+  enum Kind : char { OTHER, CREASE, BAND };
   double m_crease_angle;
   double m_radius = 0;
-  std::vector<Eigen::Vector3d> m_end0, m_end1;      // per edge: its ends
+  std::vector<Eigen::Vector3d> m_points;            // per vertex
+  std::vector<std::array<Index, 2> > m_ends;        // per edge: its vertices
+  std::vector<Kind> m_kind;                         // per edge: crease, band or neither
   std::vector<Index> m_owner;                       // per edge: the face it belongs to
   std::vector<std::array<std::array<Index, 2>, 3> > m_adj; // per face: (face across, edge) per side
   std::vector<Level> m_levels;
@@ -464,10 +504,55 @@ std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& i
   return out;
 }
 
+// The candidates whose ball holds a band edge (is_crease_gap_band_edge), or may: those
+// with a band edge closer to their midpoint than the ball's radius (plus a relative
+// 1e-6, far above rounding). The others pass the gap test whatever their ball holds
+// (no band length is at most any share of the crease length), so they need no search:
+// on a clean CAD tessellation, which has no band edge at all, none does.
+template <typename TriangleMesh, typename VPM>
+std::vector<std::size_t> candidates_near_band_edges(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
+                                                    const std::vector<double>& angle,
+                                                    const std::vector<double>& band_angle, double crease_angle,
+                                                    const std::vector<std::size_t>& candidates)
+{
+  typedef CGAL::Simple_cartesian<double> K;
+  typedef std::vector<K::Segment_3>::const_iterator Iterator;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Iterator> > > Tree;
+  const TriangleMesh& tm = idx.mesh();
+  std::vector<Eigen::Vector3d> points(idx.number_of_vertices());
+  for(std::size_t v = 0; v < points.size(); ++v)
+  {
+    const auto& p = get(vpm, idx.vertex_at(v));
+    points[v] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  std::vector<std::array<std::size_t, 2> > ends(idx.number_of_edges());
+  std::vector<K::Segment_3> band;
+  auto point = [&](std::size_t v) { return K::Point_3(points[v].x(), points[v].y(), points[v].z()); };
+  for(std::size_t e = 0; e < ends.size(); ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    ends[e] = { idx.id(source(h, tm)), idx.id(target(h, tm)) };
+    if(is_crease_gap_band_edge(angle[e], band_angle[e], crease_angle))
+      band.emplace_back(point(ends[e][0]), point(ends[e][1]));
+  }
+  std::vector<std::size_t> near;
+  if(band.empty()) return near;
+  const double r = crease_gap_ball_radius(points, ends) * (1 + 1e-6);
+  Tree tree(band.begin(), band.end());
+  tree.accelerate_distance_queries();
+  for(std::size_t e : candidates)
+  {
+    const Eigen::Vector3d c = 0.5 * (points[ends[e][0]] + points[ends[e][1]]);
+    if(tree.squared_distance(K::Point_3(c.x(), c.y(), c.z())) < r * r) near.push_back(e);
+  }
+  return near;
+}
+
 // Drops the candidates (is_crease, from `angle`) that fail the gap test; `raw` are the
 // dihedral angles of the unfiltered normals, `raw_roughness` their roughness. Each
 // candidate's test reads the angles only, never is_crease, so the candidates are tested
 // independently: by TBB's threads if `parallel`, with the same result at any count.
+// Only the candidates near a band edge are searched (candidates_near_band_edges()).
 template <typename TriangleMesh, typename VPM>
 void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
                            const std::vector<double>& raw, double raw_roughness, double crease_angle,
@@ -477,10 +562,12 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
   for(std::size_t e = 0; e < is_crease.size(); ++e)
     if(is_crease[e]) candidates.push_back(e);
   const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
+  const std::vector<std::size_t> searched =
+    candidates_near_band_edges(idx, vpm, angle, band_angle, crease_angle, candidates);
   const std::vector<Gap_lengths> lengths =
-    crease_gap_lengths(idx, vpm, angle, band_angle, crease_angle, candidates, parallel);
-  for(std::size_t i = 0; i < candidates.size(); ++i)
-    if(lengths[i].band > crease_gap_ratio * lengths[i].crease) is_crease[candidates[i]] = 0;
+    crease_gap_lengths(idx, vpm, angle, band_angle, crease_angle, searched, parallel);
+  for(std::size_t i = 0; i < searched.size(); ++i)
+    if(lengths[i].band > crease_gap_ratio * lengths[i].crease) is_crease[searched[i]] = 0;
 }
 
 } // namespace internal
