@@ -98,7 +98,7 @@ std::size_t count_lines(const std::string& path)
 
 int main(int argc, char** argv)
 {
-  fs_demo::use_huge_page_heap(argv);
+  fs_demo::use_huge_page_heap(argc, argv);
   std::string mesh_file = std::string(FS_MESH_DIR) + "/fandisk.off", out_csv;
   std::vector<int> levels = {0, 2, 3};
   for(int i = 1; i < argc; ++i)

@@ -45,7 +45,7 @@ int run(const Options& options)
 
 int main(int argc, char** argv)
 {
-  use_huge_page_heap(argv);
+  use_huge_page_heap(argc, argv);
   Options options;
   try
   {

@@ -14,6 +14,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -50,14 +51,40 @@ public:
     Boundary_smoothing_result r;
     r.energy.push_back(m_s.total_energy(true));
     r.length.push_back(m_s.total_energy(false));
+    // The sweeps work on the cut edges and the faces with cut edges, in increasing order
+    // (the other faces have no point and no energy); only the vertex moves, which change
+    // the cut edges, look at every vertex.
+    std::vector<std::size_t> cut, faces;
+    std::vector<char> marked(m_s.number_of_faces(), 0);
     for(std::size_t it = 0; it < iterations; ++it)
     {
-      const std::vector<double> t0 = m_s.edge_t;
-      const std::vector<Vec3> x0 = m_s.face_x;
-      for(std::size_t f = 0; f < m_s.number_of_faces(); ++f) update_face(f);
+      cut.clear();
+      faces.clear();
       for(std::size_t e = 0; e < m_s.number_of_edges(); ++e)
-        if(m_s.is_cut(e)) update_edge(e);
-      extrapolate(t0, x0);
+        if(m_s.is_cut(e))
+        {
+          cut.push_back(e);
+          for(std::size_t f : m_s.edge_faces[e])
+            if(f != npos && !marked[f]) { marked[f] = 1; faces.push_back(f); }
+        }
+      if(cut.empty())
+      {
+        // no boundary inside the faces: a sweep changes nothing, and its energy is 0
+        r.energy.push_back(r.energy.back());
+        r.length.push_back(r.length.back());
+        ++r.iterations;
+        r.converged = true;
+        break;
+      }
+      std::sort(faces.begin(), faces.end());
+      for(std::size_t f : faces) marked[f] = 0;
+      std::vector<double> t0(cut.size());
+      std::vector<Vec3> x0(faces.size());
+      for(std::size_t k = 0; k < cut.size(); ++k) t0[k] = m_s.edge_t[cut[k]];
+      for(std::size_t k = 0; k < faces.size(); ++k) x0[k] = m_s.face_x[faces[k]];
+      for(std::size_t f : faces) update_face(f);
+      for(std::size_t e : cut) update_edge(e);
+      extrapolate(cut, faces, t0, x0);
       for(std::size_t v = 0; v < m_s.number_of_vertices(); ++v)
         if(try_vertex_move(v)) ++r.vertex_moves;
       r.energy.push_back(m_s.total_energy(true));
@@ -245,34 +272,49 @@ public:
   // e.g. to shift a boundary onto a nearby crease); so, after a sweep, the sweep's
   // displacement is extrapolated by factors 2, 4, ... 64, points kept in their domains,
   // and the best of these states is kept if it has a lower energy.
-  void extrapolate(const std::vector<double>& t0, const std::vector<Vec3>& x0)
+  // `cut`: the cut edges, `faces`: the faces with cut edges (both in increasing order),
+  // `t0`, `x0`: their points before the sweep.
+  void extrapolate(const std::vector<std::size_t>& cut, const std::vector<std::size_t>& faces,
+                   const std::vector<double>& t0, const std::vector<Vec3>& x0)
   {
-    const std::vector<double> t1 = m_s.edge_t;
-    const std::vector<Vec3> x1 = m_s.face_x;
-    double best = m_s.total_energy(true), best_factor = 1;
+    std::vector<double> t1(cut.size());
+    std::vector<Vec3> x1(faces.size());
+    for(std::size_t k = 0; k < cut.size(); ++k) t1[k] = m_s.edge_t[cut[k]];
+    for(std::size_t k = 0; k < faces.size(); ++k) x1[k] = m_s.face_x[faces[k]];
+    // the energy is that of the faces with cut edges, summed in the order of total_energy()
+    auto energy_of_faces = [&]() {
+      double e = 0;
+      for(std::size_t f : faces) e += m_s.face_energy(f, true);
+      return e;
+    };
+    double best = energy_of_faces(), best_factor = 1;
     auto apply = [&](double factor) {
-      for(std::size_t e = 0; e < m_s.number_of_edges(); ++e)
-        if(m_s.is_cut(e))
-          m_s.edge_t[e] = (std::min)(1 - State::edge_margin,
-                                     (std::max)(State::edge_margin, t0[e] + factor * (t1[e] - t0[e])));
-      for(std::size_t f = 0; f < m_s.number_of_faces(); ++f)
+      for(std::size_t k = 0; k < cut.size(); ++k)
+        m_s.edge_t[cut[k]] = (std::min)(1 - State::edge_margin,
+                                        (std::max)(State::edge_margin, t0[k] + factor * (t1[k] - t0[k])));
+      for(std::size_t k = 0; k < faces.size(); ++k)
       {
+        const std::size_t f = faces[k];
         std::array<std::size_t, 3> c;
         const int n = m_s.cut_edges(f, c);
         if(n == 2) m_s.face_x[f] = 0.5 * (m_s.edge_point(c[0]) + m_s.edge_point(c[1]));
         else if(n == 3)
-          m_s.face_x[f] = m_s.keep_inside(f, x0[f] + factor * (x1[f] - x0[f]), State::face_margin);
+          m_s.face_x[f] = m_s.keep_inside(f, x0[k] + factor * (x1[k] - x0[k]), State::face_margin);
       }
     };
     for(double factor = 2; factor <= 64; factor *= 2)
     {
       apply(factor);
-      const double energy = m_s.total_energy(true);
+      const double energy = energy_of_faces();
       if(energy < best) { best = energy; best_factor = factor; }
       else break; // the energy along the ray is convex: past its minimum
     }
     if(best_factor > 1) apply(best_factor);
-    else { m_s.edge_t = t1; m_s.face_x = x1; }
+    else
+    {
+      for(std::size_t k = 0; k < cut.size(); ++k) m_s.edge_t[cut[k]] = t1[k];
+      for(std::size_t k = 0; k < faces.size(); ++k) m_s.face_x[faces[k]] = x1[k];
+    }
   }
 
 private:
