@@ -264,9 +264,8 @@ Patch_boundaries<TriangleMesh> make_patch_boundaries(const Segmentation_data<Tri
                                                      const Feature_terms& features,
                                                      const std::vector<std::size_t>& labels)
 {
-  Boundary_state<TriangleMesh> state(data.idx, data.points, data.metrics);
-  state.initialize(labels, features.dual_vertices);
-  return Patch_boundaries<TriangleMesh>(std::move(state));
+  return Patch_boundaries<TriangleMesh>(
+    Boundary_state<TriangleMesh>(data.idx, data.points, data.metrics, labels, features.dual_vertices));
 }
 
 } // namespace internal

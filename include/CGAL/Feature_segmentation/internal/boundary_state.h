@@ -64,11 +64,15 @@ public:
   // A junction point keeps barycentric coordinates of at least this.
   static constexpr double face_margin = 1e-3;
 
-  // Topology and geometry copied from the indexing and the weights' terms, so that the
+  // The initial boundaries of the labelling `vertex_labels` (see initialize()), with the
+  // topology and geometry copied from the indexing and the weights' terms, so that the
   // state does not refer to the indexing's property maps after construction; the face
   // metrics are shared with the segmentation's data (read only, kept alive by the state).
+  // The rings are made for the vertices that may move (`movable`) only: the smoothing
+  // reads no other, and on a mesh whose patches meet along creases there is none.
   Boundary_state(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Vec3>& vertex_points,
-                 std::shared_ptr<const std::vector<Triangle_metric> > face_metrics)
+                 std::shared_ptr<const std::vector<Triangle_metric> > face_metrics,
+                 const std::vector<std::size_t>& vertex_labels, const std::vector<Vec3>& dual_vertices)
     : m_tm(&idx.mesh()), metrics(std::move(face_metrics))
   {
     const TriangleMesh& tm = idx.mesh();
@@ -96,17 +100,21 @@ public:
       face_vertices[f] = { idx.id(source(h, tm)), idx.id(target(h, tm)), idx.id(target(next(h, tm), tm)) };
       face_edges[f] = { idx.edge_id(h), idx.edge_id(next(h, tm)), idx.edge_id(prev(h, tm)) };
     }
-    // The ring of every vertex, in the order of halfedges_around_target: neighbour i,
-    // the edge to it, and the face between edges i and i+1 (npos across the border,
-    // which is rotated to the end of the ring).
+    labels.assign(nv, 0);
+    edge_t.assign(ne, 0.5);
+    face_x.assign(nf, Vec3::Zero());
+    movable.assign(nv, 0);
+    initialize(vertex_labels, dual_vertices);
+    // The ring of every movable vertex, in the order of halfedges_around_target:
+    // neighbour i, the edge to it, and the face between edges i and i+1 (npos across the
+    // border, which is rotated to the end of the ring); empty for the others.
     ring_offset.assign(nv + 1, 0);
-    ring_entries.reserve(2 * ne);
     std::vector<std::array<Compact_index, 3> > ring;
     for(std::size_t v = 0; v < nv; ++v)
     {
       const auto vd = idx.vertex_at(v);
       ring.clear();
-      if(halfedge(vd, tm) != GTr::null_halfedge())
+      if(movable[v] && halfedge(vd, tm) != GTr::null_halfedge())
         for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(vd, tm), tm))
           ring.push_back({ idx.id(source(h, tm)), idx.edge_id(h), idx.face_id(h) });
       const auto gap = std::find_if(ring.begin(), ring.end(),
@@ -115,12 +123,9 @@ public:
       for(const auto& r : ring) ring_entries.push_back(r);
       ring_offset[v + 1] = ring_entries.size();
     }
-    labels.assign(nv, 0);
-    edge_t.assign(ne, 0.5);
-    face_x.assign(nf, Vec3::Zero());
-    movable.assign(nv, 0);
   }
 
+private:
   // The initial boundaries of a labelling (paper, Fig. 3(c)): the point of a triangle
   // with cut edges is its dual vertex (of the weights); the point of a cut edge is where
   // the shortest path between its two triangles' dual vertices through the edge crosses
@@ -145,6 +150,8 @@ public:
     for(std::size_t f = 0; f < number_of_faces(); ++f)
       face_x[f] = has_cut_edges(f) ? keep_inside(f, dual_vertices[f], face_margin) : Vec3::Zero();
   }
+
+public:
 
   // The initial point of an edge from p0 to p1 between two faces with dual vertices d0
   // and d1 (as a parameter from p0): where the shortest path from d0 to d1 through the
