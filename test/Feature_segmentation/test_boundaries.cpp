@@ -419,4 +419,23 @@ BOOST_AUTO_TEST_CASE(invalid_values)
   BOOST_CHECK_THROW(FS::compute_patch_boundaries(m, neg), FS::Invalid_input);
 }
 
+// Patch ids are the user's, whatever their size: an id beyond 32 bits reaches the refined
+// mesh and its file unchanged.
+BOOST_AUTO_TEST_CASE(patch_ids_beyond_32_bits)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::plane(1., 4));
+  const std::size_t big = 5000000000u;
+  auto vp = label_vertices(m, [&](double x, double, double) { return x > 0.1 ? big : std::size_t(7); });
+  FS::Patch_boundaries<SM> b = FS::compute_patch_boundaries(m, vp);
+  SM out;
+  auto ofp = out.add_property_map<SM::Face_index, std::size_t>("f:patch", 0).first;
+  FS::refine_mesh_along_boundaries(b, out, ofp);
+  std::set<std::size_t> ids;
+  for(auto f : out.faces()) ids.insert(ofp[f]);
+  BOOST_TEST((ids == std::set<std::size_t>{ 7, big }));
+  std::ostringstream os;
+  FS::write_PLY_refined_segmentation(os, b);
+  BOOST_TEST(os.str().find(" 5000000000 ") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

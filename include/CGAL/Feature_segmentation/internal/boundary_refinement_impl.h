@@ -44,7 +44,7 @@ struct Refinement
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<Compact_index, 3> > triangles;
-  std::vector<Compact_index> patches;
+  std::vector<std::size_t> patches; // the user's patch ids: any std::size_t
   std::size_t split_faces = 0;
 };
 

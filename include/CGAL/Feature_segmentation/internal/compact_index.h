@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // An element id stored in 32 bits where a mesh's topology is copied into arrays (half
 // the memory of std::size_t). It reads and writes as a std::size_t, and keeps "none"
-// (std::size_t(-1), a border's missing face) as "none". The arrays that hold it check
+// (std::size_t(-1), a border's missing face) as "none". For element ids only (never
+// for the user's patch ids, which may be any std::size_t): the arrays that hold it check
 // their mesh's size with check_compact_index_range().
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_COMPACT_INDEX_H

@@ -338,8 +338,9 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   typedef typename GTr::face_descriptor face_descriptor;
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces(), ne = idx.number_of_edges();
-  // the working mesh has at most 3 nf vertices and 2 ne edges
-  check_compact_index_range(std::max(3 * nf, 4 * ne));
+  // the working mesh has at most 3 nf + nv vertices (a copy per corner, and the
+  // isolated vertices) and 2 ne edges (4 ne halfedges)
+  check_compact_index_range(std::max(3 * nf + nv, 4 * ne));
 
   cut = Crease_cut<TriangleMesh>();
   cut.is_crease.assign(ne, 0);
