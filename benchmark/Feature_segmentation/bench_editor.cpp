@@ -7,12 +7,17 @@
 // Meshes: fandisk (12,946 faces, from CGAL's data), fandisk subdivided flat twice
 // (207,136 faces, made here), and rockerarm (41k faces) from the paper's models in
 // --data DIR or $FEATURE_SEGMENTATION_DATA (skipped, with a message, when absent).
-// On fandisk x16 the library's set_alpha() alone is timed too (issue: median <= 5 ms).
+// The library's edits alone (set_alpha, add_to_alpha, merge_patches) are timed on
+// fandisk, x16 and x64 (828k faces): they should not grow with the mesh (issue: nothing
+// proportional to the mesh on the edit path; set_alpha at 207k median <= 5 ms).
 //
 // Usage: bench_editor [--data DIR] [--repeat N] [--out FILE]
 #include "bench_common.h"
 
 #include "../../demo/Feature_segmentation/editor_api.h"
+
+#include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <algorithm>
 #include <chrono>
@@ -21,6 +26,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -33,7 +39,15 @@ struct Row
   std::string mesh, op;
   std::size_t faces = 0, patches = 0;
   double edit_median = 0, edit_max = 0, labels_median = 0;
+  double solve_median = -1; // library edits: the weights of G', the solve, the patch ids
 };
+
+std::string two_decimals(double x)
+{
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(2) << x;
+  return o.str();
+}
 
 double median(std::vector<double> v)
 {
@@ -147,33 +161,60 @@ void bench(const std::string& name, const std::string& path, int repeat, std::ve
           undo);
 }
 
-// The library's own alpha edit, without the editor: Feature_aligned_segmentation at its
-// defaults, set_alpha() between 0.6 and 0.9 `repeat` times; "labels" is the time of
-// vertex_patches(), what a caller who asks for every vertex's patch pays after it.
-void bench_set_alpha(const std::string& name, const std::string& path, int repeat, std::vector<Row>& rows)
+// The library's own edits, without the editor: Feature_aligned_segmentation at its
+// defaults; `repeat` times each: set_alpha() between 0.6 and 0.9, add_to_alpha() of
+// +0.3 on the faces within 5% of the diagonal of the centroid of face F/3 (then undo),
+// merge_patches() of the first face and the first face of another patch (then undo).
+// "solve" is the part of the edit that builds the weights of G', solves and numbers
+// the patches (stage_times: graph + solve + labels); "labels" the time of
+// vertex_patches() after it, what a caller who asks for every vertex's patch pays.
+void bench_library(const std::string& name, const std::string& path, int repeat, std::vector<Row>& rows)
 {
-  CGAL::Surface_mesh<fs_demo::K::Point_3> m;
+  typedef CGAL::Surface_mesh<fs_demo::K::Point_3> Mesh;
+  Mesh m;
   std::string error;
   if(!fs_bench::read_mesh(path, m, error)) throw std::runtime_error(path + ": " + error);
-  CGAL::Feature_segmentation::Feature_aligned_segmentation<CGAL::Surface_mesh<fs_demo::K::Point_3> > seg(m);
-  auto patch_map = m.add_property_map<CGAL::SM_Vertex_index, std::size_t>("v:bench_patch").first;
-  std::vector<double> edit, labels, solve;
-  for(int r = 0; r < repeat; ++r)
-  {
-    auto t0 = std::chrono::steady_clock::now();
-    seg.set_alpha(r % 2 ? 0.6 : 0.9);
-    edit.push_back(seconds_since(t0));
-    const auto& st = seg.stage_times();
-    solve.push_back(st.graph + st.solve + st.labels);
-    t0 = std::chrono::steady_clock::now();
-    seg.vertex_patches(patch_map);
-    labels.push_back(seconds_since(t0));
-  }
-  std::cerr << name << ": set_alpha median " << 1000 * median(edit) << " ms, of which the weights of G', the solve "
-            << "and the labels " << 1000 * median(solve) << " ms (" << seg.number_of_oversegments()
-            << " oversegments)" << std::endl;
-  rows.push_back({name, "set_alpha (library)", num_faces(m), seg.number_of_patches(), 1000 * median(edit),
-                  1000 * *std::max_element(edit.begin(), edit.end()), 1000 * median(labels)});
+  CGAL::Feature_segmentation::Feature_aligned_segmentation<Mesh> seg(m);
+  auto patch_map = m.add_property_map<Mesh::Vertex_index, std::size_t>("v:bench_patch").first;
+  auto centroid = [&](Mesh::Face_index f) {
+    const auto h = m.halfedge(f);
+    return CGAL::centroid(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
+  };
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(m);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const auto center = centroid(Mesh::Face_index(Mesh::size_type(num_faces(m) / 3)));
+  std::vector<Mesh::Face_index> region;
+  for(auto f : m.faces())
+    if(CGAL::squared_distance(centroid(f), center) <= CGAL::square(0.05 * diagonal)) region.push_back(f);
+  auto measure = [&](const std::string& op, auto edit_once, auto after) {
+    std::vector<double> edit, labels, solve;
+    std::size_t patches = 0;
+    for(int r = 0; r < repeat; ++r)
+    {
+      auto t0 = std::chrono::steady_clock::now();
+      patches = edit_once(r);
+      edit.push_back(seconds_since(t0));
+      const auto& st = seg.stage_times();
+      solve.push_back(st.graph + st.solve + st.labels);
+      t0 = std::chrono::steady_clock::now();
+      seg.vertex_patches(patch_map);
+      labels.push_back(seconds_since(t0));
+      after();
+    }
+    rows.push_back({name, op + " (library)", num_faces(m), patches, 1000 * median(edit),
+                    1000 * *std::max_element(edit.begin(), edit.end()), 1000 * median(labels), 1000 * median(solve)});
+  };
+  auto nothing = [] {};
+  auto undo = [&] { seg.undo(); };
+  measure("set_alpha", [&](int r) { return seg.set_alpha(r % 2 ? 0.6 : 0.9); }, nothing);
+  measure("add_to_alpha", [&](int) { return seg.add_to_alpha(region, 0.3); }, undo);
+  Mesh::Face_index other = *m.faces().begin();
+  for(auto f : m.faces())
+    if(seg.patch(f) != seg.patch(*m.faces().begin())) { other = f; break; }
+  const std::vector<Mesh::Face_index> stroke = { *m.faces().begin(), other };
+  measure("merge_patches", [&](int) { return seg.merge_patches(stroke); }, undo);
+  std::cerr << name << ": library edits measured (" << seg.number_of_oversegments() << " oversegments)" << std::endl;
 }
 
 } // namespace
@@ -207,8 +248,13 @@ int main(int argc, char** argv)
                                                           : rockerarm + " is absent") << std::endl;
     const std::string big = subdivided_fandisk(2);
     bench("fandisk x16", big, repeat, rows);
-    bench_set_alpha("fandisk x16", big, repeat, rows);
+    // the library's edits at three sizes of one shape (G' is alike at every size)
+    bench_library("fandisk", std::string(FS_MESH_DIR) + "/fandisk.off", repeat, rows);
+    bench_library("fandisk x16", big, repeat, rows);
     std::filesystem::remove(big);
+    const std::string bigger = subdivided_fandisk(3);
+    bench_library("fandisk x64", bigger, repeat, rows);
+    std::filesystem::remove(bigger);
   }
   catch(const std::exception& e)
   {
@@ -217,18 +263,22 @@ int main(int argc, char** argv)
   }
   std::cout << "Editor answer times, " << fs_bench::cpu_name() << ", one thread, median of " << repeat
             << " (ms; edit = the POST /api/edit handler's work, labels = the GET /api/labels that follows;"
-            << " set_alpha (library): Feature_aligned_segmentation::set_alpha(), labels = vertex_patches())\n\n"
-            << "| mesh | faces | edit | patches | edit median | edit max | labels median |\n"
-            << "|---|---:|---|---:|---:|---:|---:|\n";
+            << " (library): the Feature_aligned_segmentation edit, of which solve = weights of G' + solve + patch"
+            << " ids, labels = vertex_patches())\n\n"
+            << "| mesh | faces | edit | patches | edit median | edit max | of which solve | labels median |\n"
+            << "|---|---:|---|---:|---:|---:|---:|---:|\n";
   std::ofstream csv(out);
-  csv << "mesh,faces,edit,patches,edit_ms_median,edit_ms_max,labels_ms_median\n";
+  csv << "mesh,faces,edit,patches,edit_ms_median,edit_ms_max,solve_ms_median,labels_ms_median\n";
   for(const Row& r : rows)
   {
     std::cout << "| " << r.mesh << " | " << r.faces << " | " << r.op << " | " << r.patches << " | " << std::fixed
-              << std::setprecision(1) << r.edit_median << " | " << r.edit_max << " | " << r.labels_median << " |\n"
+              << std::setprecision(2) << r.edit_median << " | " << r.edit_max << " | "
+              << (r.solve_median < 0 ? std::string("-") : two_decimals(r.solve_median)) << " | "
+              << r.labels_median << " |\n"
               << std::defaultfloat;
     csv << fs_bench::csv_text(r.mesh) << ',' << r.faces << ',' << r.op << ',' << r.patches << ',' << r.edit_median
-        << ',' << r.edit_max << ',' << r.labels_median << '\n';
+        << ',' << r.edit_max << ',' << (r.solve_median < 0 ? std::string() : std::to_string(r.solve_median)) << ','
+        << r.labels_median << '\n';
   }
   std::cout << "\nCSV: " << out << '\n';
   return 0;

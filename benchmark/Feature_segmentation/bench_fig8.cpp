@@ -26,7 +26,8 @@
 // every feature edge to alpha, so it solves what a one-shot segmentation at that alpha
 // solves after the precomputation (a check at the default alpha compares (b) and (c) with
 // segment_along_features()). "solve" is its stage_times().graph + solve + labels: the
-// weights of G or G' at alpha, the default solver (GAEC + KLj), the vertex labels; what
+// weights of G or G' at alpha, the default solver (GAEC + KLj), the patch ids (one per
+// node: per vertex on G, per oversegment on G'); what
 // an alpha edit costs once G' is known, without the class's bookkeeping, which the edit
 // statistics (stage_times().last_edit) include. "overseg" does not depend on alpha, so
 // "overseg + solve" at an alpha (the total) is what a one-shot segmentation at
@@ -129,7 +130,7 @@ struct Variant
 };
 
 std::string ms(double seconds) { return format("%.1f", 1000 * seconds) + " ms"; }
-// The seconds of the last solve: the weights of the graph, the solver, the vertex labels.
+// The seconds of the last solve: the weights of the graph, the solver, the patch ids.
 double solve_seconds(const Segmentation::Stage_times& t) { return t.graph + t.solve + t.labels; }
 
 template <typename NamedParameters>
@@ -283,7 +284,7 @@ int run(const Options& options)
     for(Row& r : rows) (k == 0 ? r.full : k == 1 ? r.geo : r.aniso) = solve_at(*seg, r.alpha, v, options.repeat);
   }
   const std::string legend = "overseg: oversegmentation and the topology of G' (in the construction); solve: "
-                             "weights at alpha, GAEC+KLj, vertex labels (after set_alpha); cost: cut cost on the "
+                             "weights at alpha, GAEC+KLj, patch ids (after set_alpha); cost: cut cost on the "
                              "mesh edges (Eq. 1); gap: ((c) - (a)) / |(a)|";
   std::cout << "Crest lines: " << seg->feature_lines().lines.size() << " lines, " << seg->number_of_feature_edges()
             << " feature edges\nTimes in seconds, fastest of " << options.repeat << " run(s). " << legend
@@ -302,8 +303,9 @@ int run(const Options& options)
       r.versus_geo().c_str());
 
   // ---- the table against what a user runs: the one-call function at the default alpha ----
-  // set_alpha() keeps alpha_e as offsets of alpha, so after a few edits the weights may
-  // differ from a fresh solve's in the last bits: the costs are compared with a tolerance.
+  // set_alpha() reads a feature edge's alpha_e as the construction's alpha plus the
+  // difference to alpha, so the weights may differ from a fresh solve's in the last bits:
+  // the costs are compared with a tolerance.
   const auto at_default =
     std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return std::abs(r.alpha - default_alpha) < 1e-9; });
   std::string check = (at_default == rows.end()) ? "skipped (the default alpha is not on the grid)" : "ok";
@@ -336,7 +338,7 @@ int run(const Options& options)
   }
   const double median = median_of(edit_times), worst = *std::max_element(edit_times.begin(), edit_times.end());
   const std::string edits = "median " + ms(median) + ", max " + ms(worst) +
-                            "; of which weights of G' + solve + vertex labels: median " + ms(median_of(solve_times)) +
+                            "; of which weights of G' + solve + patch ids: median " + ms(median_of(solve_times)) +
                             ", max " + ms(*std::max_element(solve_times.begin(), solve_times.end()));
   std::cout << "Re-solve after an alpha edit: Feature_aligned_segmentation::set_alpha on the anisotropic G' ("
             << seg->number_of_oversegments() << " oversegments), " << number_of_edits

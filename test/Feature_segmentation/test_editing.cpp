@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <map>
 #include <vector>
@@ -121,12 +122,14 @@ BOOST_AUTO_TEST_CASE(global_refine_and_multiply)
   BOOST_TEST(seg.undo());
   BOOST_TEST(seg.number_of_patches() == 8u);
   BOOST_CHECK_THROW(seg.set_alpha(std::nan("")), FS::Invalid_input);
-  // The history is bounded by memory. An alpha edit on this mesh (no crease, no tie)
-  // makes a new alpha_e (one double per edge) and new labels (one size_t per vertex) and
-  // shares everything else, so each earlier state costs 8 (E + V) bytes: with a limit of
-  // five of them, five edits stay undoable, whatever the number made.
-  const std::size_t per_state = 8 * (num_edges(m) + num_vertices(m));
-  BOOST_TEST(per_state == 8u * (15360u + 5120u));
+  // The history is bounded by memory. An alpha edit writes nothing per edge or per
+  // vertex: its state holds a new alpha and the patch of every oversegment (one size_t
+  // each) and shares everything else, so each earlier state costs 8 bytes per node of
+  // G', far less than a double per edge and a label per vertex (8 (E + V) bytes). With
+  // a limit of five of them, five edits stay undoable, whatever the number made.
+  const std::size_t per_state = 8 * seg.number_of_oversegments();
+  BOOST_TEST(seg.number_of_oversegments() > 8u);
+  BOOST_TEST(per_state * 20 < 8u * (num_edges(m) + num_vertices(m)));
   seg.set_undo_memory_limit(5 * per_state);
   BOOST_TEST(seg.number_of_undoable_edits() <= 5u);
   const std::size_t recorded_before = seg.number_of_recorded_edits();
@@ -163,6 +166,53 @@ BOOST_AUTO_TEST_CASE(global_refine_and_multiply)
   BOOST_TEST((labels(m, seg) == kept[14]));
   seg.set_undo_memory_limit(std::size_t(256) << 20);
   BOOST_CHECK_THROW(seg.multiply_alpha(all, -1.), FS::Invalid_input);
+}
+
+// An alpha edit writes no alpha_e: the feature edges' values follow the state's alpha.
+// After alpha 1.0 and back to 0.6, every weight is the construction's to the last bit
+// (shifting each alpha_e there and back would round), and so are the labels and the cut
+// cost. A local coarsening in between writes the alpha_e of its edges only (stored at
+// the construction's alpha): back at 0.6, the others are untouched.
+BOOST_AUTO_TEST_CASE(alpha_there_and_back_is_exact)
+{
+  SM m = fs_test::to_mesh<SM>(fs_test::Lobed_torus{}.soup(80, 64));
+  Segmentation seg(m, FS::parameters::alpha(0.6));
+  BOOST_REQUIRE(seg.number_of_patches() == 4u);
+  auto weights = [&] {
+    std::vector<double> w;
+    for(auto e : m.edges()) w.push_back(seg.weight(e));
+    return w;
+  };
+  const std::vector<double> w0 = weights();
+  const std::vector<std::size_t> l0 = labels(m, seg);
+  const double cost0 = seg.cut_cost();
+  BOOST_TEST(seg.set_alpha(1.0) == 8u);
+  BOOST_TEST(seg.set_alpha(0.6) == 4u);
+  BOOST_TEST((weights() == w0));
+  BOOST_TEST((labels(m, seg) == l0));
+  BOOST_TEST(seg.cut_cost() == cost0);
+  // one face's feature edges coarsened at alpha 1.0: back at 0.6, only they differ
+  std::vector<SM::Face_index> one;
+  for(auto f : m.faces())
+  {
+    bool has_feature = false;
+    for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) has_feature |= seg.is_feature_edge(m.edge(h));
+    if(has_feature) { one.push_back(f); break; }
+  }
+  BOOST_REQUIRE(one.size() == 1u);
+  std::set<SM::Edge_index> changed;
+  for(auto h : CGAL::halfedges_around_face(m.halfedge(one[0]), m))
+    if(seg.is_feature_edge(m.edge(h))) changed.insert(m.edge(h));
+  seg.set_alpha(1.0);
+  seg.add_to_alpha(one, -0.25);
+  seg.set_alpha(0.6);
+  std::size_t i = 0;
+  for(auto e : m.edges())
+  {
+    if(changed.count(e)) BOOST_TEST(seg.alpha(e) == ((0.6 + (1.0 - 0.6)) + -0.25) - (1.0 - 0.6));
+    else BOOST_TEST(seg.weight(e) == w0[i]);
+    ++i;
+  }
 }
 
 // Merging the patches a stroke touches gives one patch, kept by later solves.

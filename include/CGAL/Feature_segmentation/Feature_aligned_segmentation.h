@@ -34,23 +34,27 @@ namespace Feature_segmentation {
 ///
 /// | edit | what it recomputes | cost |
 /// |---|---|---|
-/// | `set_alpha()` (global refine/coarsen) | the weights of G', the clustering of G' | O(E + V) bookkeeping + solve on G' |
-/// | `add_to_alpha()`, `multiply_alpha()` (local) | the same, the clustering on the patches the region touches only | O(E + V) bookkeeping + solve on those patches |
-/// | `merge_patches()` | the labels (a constraint that later solves keep) | O(V) |
+/// | `set_alpha()` (global refine/coarsen) | the weights of G', the clustering of G' | a solve on G' |
+/// | `add_to_alpha()`, `multiply_alpha()` (local) | the same, the clustering on the patches the region touches only | the region's edges + a solve on those patches |
+/// | `merge_patches()` | the patches (a constraint that later solves keep) | O(N) |
 /// | `add_sketch()` | terms of the faces around the sketch, the oversegmentation inside the patches it touches, G', their clustering | O(F log F + E log E) + solve on those patches |
 /// | `undo()`, `redo()` | nothing: moves along the history of states | O(1) |
 ///
-/// E, V, F are the mesh's edges, vertices and faces; G' is much smaller (6,453 nodes and
-/// 18,374 edges on rockerarm remeshed to 196,566 faces, against 98,283 vertices and
-/// 294,849 edges). The bookkeeping is a few linear passes over arrays: on that mesh an
-/// alpha edit took a median of 13.9 ms in all (`bench_fig8`).
+/// E, F are the mesh's edges and faces, N the nodes of G' (oversegments); G' is much
+/// smaller than the mesh (6,453 nodes and 18,374 edges on rockerarm remeshed to 196,566
+/// faces, against 98,283 vertices and 294,849 edges). No edit but a sketch reads or
+/// writes anything per vertex or per edge of the mesh: the patches are kept per
+/// oversegment (a vertex's patch is its oversegment's, read when asked: `patch()`,
+/// `vertex_patches()`, `face_patches()`), and the `alpha_e` of the feature edges follow
+/// alpha without being rewritten (a local edit writes those of its region only, in
+/// chunks of 4096 edges shared with the states before).
 ///
 /// Each edit makes a new state that shares with the one before every part the edit leaves
-/// alone (an alpha edit: the per-edge parameters and the labels, some 3 MB on a 200k-face
-/// mesh; a sketch also the feature terms and G'); the history of states is bounded by
-/// memory (`set_undo_memory_limit()`), not by a number of edits, and undo and redo are
-/// exact. A copy of the object shares the precomputation and the states (it is cheap),
-/// and edits each copy on its own.
+/// alone (an alpha edit: everything but one patch id per oversegment; a local edit also
+/// the chunks of per-edge parameters it writes; a sketch also the feature terms and G');
+/// the history of states is bounded by memory (`set_undo_memory_limit()`), not by a
+/// number of edits, and undo and redo are exact. A copy of the object shares the
+/// precomputation and the states (it is cheap), and edits each copy on its own.
 ///
 /// A vertex that no face uses (isolated) is a patch of its own. If an edit throws (a
 /// user solver, memory), nothing has changed: the new state is published only once
@@ -85,7 +89,8 @@ public:
   /// for benchmarks and reports: `mesh_check_and_indexing`, `creases`, `curvature`,
   /// `feature_lines`, `weight_terms`, `oversegmentation` (of the construction, or of the
   /// last sketch), then of the last solve `graph` (the weights of G'), `solve` (the
-  /// solver) and `labels` (the vertex labels), and `last_edit` (the whole last edit).
+  /// solver) and `labels` (the patch ids of the oversegments, numbered in vertex order),
+  /// and `last_edit` (the whole last edit).
   typedef internal::Stage_times Stage_times;
   /// @}
 
@@ -108,7 +113,7 @@ public:
   /// The patch of a vertex, in `0 .. number_of_patches()-1`. A vertex on a crease has a
   /// copy on each side of it in `working_mesh()`; this is the patch of the copy in the
   /// sector of its first face (`face_patches()` is exact along creases).
-  std::size_t patch(vertex_descriptor v) const { return labels()[pre().working_vertex(v)]; }
+  std::size_t patch(vertex_descriptor v) const { return state().vertex_patch(pre().working_vertex(v)); }
   /// The patch of a face: the patch that covers most of its area under the boundaries of
   /// the current patches as `patch_boundaries()` gives them (unsmoothed), ties to the
   /// smallest id; the rule of `majority_face_patches()` and `face_patches(b, map)`,
@@ -125,7 +130,8 @@ public:
   template <typename VertexPatchMap>
   void vertex_patches(VertexPatchMap map) const
   {
-    write_vertex_patches(labels(), map);
+    const internal::Edit_state& s = state();
+    write_vertex_patches(map, [&s](std::size_t w) { return s.vertex_patch(w); });
   }
   /// Writes the patch of every face (as `patch(face_descriptor)`) into a
   /// `WritablePropertyMap` from `face_descriptor`.
@@ -166,16 +172,19 @@ public:
   {
     CGAL_precondition(&b.mesh() == &working_mesh() &&
                       b.state().number_of_vertices() == pre().working_indexing().number_of_vertices());
-    write_vertex_patches(b.state().labels, map);
+    write_vertex_patches(map, [&b](std::size_t w) { return b.state().labels[w]; });
   }
   /// The cut cost (Eq. 1) of the current segmentation under the current weights (the
   /// crease ties included).
   double cut_cost() const
   {
+    // the cut edges are the edges of G' between oversegments of two patches
+    const internal::Edit_state& s = state();
+    const internal::Reduced_graph& rg = s.reduction->rg;
     double cost = 0;
-    const auto& ev = pre().data->edge_vertices;
-    for(std::size_t e : state().reduction->rg.cross)
-      if(labels()[ev[e].first] != labels()[ev[e].second]) cost += m_engine.weight(state(), e);
+    for(std::size_t i = 0; i < rg.edges.size(); ++i)
+      if((*s.segment_patch)[rg.edges[i].first] != (*s.segment_patch)[rg.edges[i].second])
+        for(std::size_t k = rg.cross_begin[i]; k < rg.cross_begin[i + 1]; ++k) cost += s.weight(rg.cross[k]);
     return cost;
   }
   /// The global parameter alpha.
@@ -184,16 +193,16 @@ public:
   double alpha(edge_descriptor e) const
   {
     const auto t = pre().ties_of(pre().input_indexing().id(e));
-    return (*state().alpha_e)[t.first != t.second ? t.first : pre().working_edge(e)];
+    return state().alpha_of(t.first != t.second ? t.first : pre().working_edge(e));
   }
   /// The weight `w(e) = Similarity(e) - alpha_e Award(e)` of an edge; of a crease edge,
   /// the weight of cutting along it (its two ties).
   double weight(edge_descriptor e) const
   {
     const auto t = pre().ties_of(pre().input_indexing().id(e));
-    if(t.first == t.second) return m_engine.weight(state(), pre().working_edge(e));
+    if(t.first == t.second) return state().weight(pre().working_edge(e));
     double w = 0;
-    for(std::size_t i = t.first; i < t.second; ++i) w += m_engine.weight(state(), i);
+    for(std::size_t i = t.first; i < t.second; ++i) w += state().weight(i);
     return w;
   }
   /// Whether an edge is a feature edge (a crease, or from the feature lines, the user or
@@ -224,7 +233,7 @@ public:
   /// this object.
   Patch_boundaries<TriangleMesh> patch_boundaries() const
   {
-    return internal::make_patch_boundaries(*pre().data, *state().features, labels());
+    return internal::make_patch_boundaries(*pre().data, *state().features, state().vertex_patches());
   }
   /// The number of oversegments (nodes of G').
   std::size_t number_of_oversegments() const { return state().reduction->os.number_of_segments; }
@@ -238,7 +247,9 @@ public:
 
   /// Global refinement (larger `a`) or coarsening: sets alpha to `a`. The `alpha_e` of
   /// every feature edge moves by `a - alpha()`, so local edits made before are kept as
-  /// offsets (the authors' tool does the same).
+  /// offsets (the authors' tool does the same). A feature edge's `alpha_e` is kept as
+  /// its value at the construction's alpha, so setting alpha back to an earlier value
+  /// gives back the same weights to the last bit.
   std::size_t set_alpha(double a)
   {
     if(!std::isfinite(a)) throw Invalid_input("alpha must be a finite number");
@@ -346,15 +357,15 @@ private:
   const internal::Edit_precomputation<TriangleMesh>& pre() const { return m_engine.precomputation(); }
   const internal::Edit_state& state() const { return m_engine.state(); }
   const internal::Edit_history& history() const { return m_engine.history(); }
-  const std::vector<std::size_t>& labels() const { return *state().labels; }
 
-  template <typename VertexPatchMap>
-  void write_vertex_patches(const std::vector<std::size_t>& working_labels, VertexPatchMap map) const
+  // Writes patch_of(w) for the working vertex w of every input vertex.
+  template <typename VertexPatchMap, typename PatchOf>
+  void write_vertex_patches(VertexPatchMap map, const PatchOf& patch_of) const
   {
     typedef typename boost::property_traits<VertexPatchMap>::value_type Id;
     const internal::Mesh_indexing<TriangleMesh>& in = pre().input_indexing();
     for(std::size_t v = 0; v < in.number_of_vertices(); ++v)
-      put(map, in.vertex_at(v), static_cast<Id>(working_labels[pre().working_vertex(v)]));
+      put(map, in.vertex_at(v), static_cast<Id>(patch_of(pre().working_vertex(v))));
   }
 
   Engine m_engine;

@@ -9,6 +9,7 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_EDIT_HISTORY_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_EDIT_HISTORY_H
 
+#include <CGAL/Feature_segmentation/internal/edge_alphas.h>
 #include <CGAL/Feature_segmentation/internal/edge_weights_impl.h>
 #include <CGAL/Feature_segmentation/internal/oversegmentation_impl.h>
 
@@ -23,39 +24,72 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// The oversegmentation and the graph G' it induces (a sketch redoes them).
+// The oversegmentation and the graph G' it induces (a sketch redoes them), with the
+// oversegments in the order of their first vertex (the order patch ids follow).
 struct Reduction
 {
   Oversegmentation os;
   Reduced_graph rg;
+  std::vector<std::size_t> segments_in_vertex_order;
+
+  // Sets segments_in_vertex_order from os (every vertex in a segment).
+  void order_segments()
+  {
+    std::vector<char> seen(os.number_of_segments, 0);
+    segments_in_vertex_order.clear();
+    segments_in_vertex_order.reserve(os.number_of_segments);
+    for(std::size_t s : os.vertex_segment)
+    {
+      CGAL_assertion(s < os.number_of_segments);
+      if(!seen[s]) { seen[s] = 1; segments_in_vertex_order.push_back(s); }
+    }
+    CGAL_postcondition(segments_in_vertex_order.size() == os.number_of_segments);
+  }
 
   std::size_t memory() const
   {
-    return os.vertex_segment.capacity() * sizeof(std::size_t) +
+    return (os.vertex_segment.capacity() + segments_in_vertex_order.capacity()) * sizeof(std::size_t) +
            rg.edges.capacity() * sizeof(std::pair<std::size_t, std::size_t>) +
            (rg.cross_begin.capacity() + rg.cross.capacity()) * sizeof(std::size_t);
   }
 };
 
 // One state of the segmentation: every part is shared, read-only, with the states
-// before and after it that have the same part.
+// before and after it that have the same part. The patches are kept per oversegment, so
+// an edit that re-solves G' writes nothing per vertex; a vertex's patch is that of its
+// oversegment.
 struct Edit_state
 {
   double alpha = 0;
-  std::shared_ptr<const std::vector<double> > alpha_e;     // per edge and crease tie
-  std::shared_ptr<const std::vector<std::size_t> > group;  // per oversegment: its merge group
-  std::shared_ptr<const std::vector<std::size_t> > labels; // per working vertex: its patch
+  Edge_alphas alpha_e;                                            // per edge and crease tie
+  std::shared_ptr<const std::vector<std::size_t> > group;         // per oversegment: its merge group
+  std::shared_ptr<const std::vector<std::size_t> > segment_patch; // per oversegment: its patch
   std::size_t number_of_patches = 0;
   std::shared_ptr<const Reduction> reduction;
   std::shared_ptr<const Feature_terms> features;
 
-  // Calls f(pointer, bytes) for every part.
+  // The alpha_e and the weight of edge (or crease tie) `e`.
+  double alpha_of(std::size_t e) const { return alpha_e(e, features->is_feature_edge[e] != 0, alpha); }
+  double weight(std::size_t e) const { return features->weight(e, alpha_of(e)); }
+
+  // The patch of working vertex `v`, and of every working vertex.
+  std::size_t vertex_patch(std::size_t v) const { return (*segment_patch)[reduction->os.vertex_segment[v]]; }
+  std::vector<std::size_t> vertex_patches() const
+  {
+    const std::vector<std::size_t>& seg = reduction->os.vertex_segment;
+    std::vector<std::size_t> labels(seg.size());
+    for(std::size_t v = 0; v < seg.size(); ++v) labels[v] = (*segment_patch)[seg[v]];
+    return labels;
+  }
+
+  // Calls f(pointer, bytes) for every part; f returns whether the part is new to it (a
+  // part made of parts reports those only when it is new itself).
   template <typename F>
   void for_each_part(F f) const
   {
-    f(alpha_e.get(), alpha_e->capacity() * sizeof(double));
+    alpha_e.for_each_part(f);
     f(group.get(), group->capacity() * sizeof(std::size_t));
-    f(labels.get(), labels->capacity() * sizeof(std::size_t));
+    f(segment_patch.get(), segment_patch->capacity() * sizeof(std::size_t));
     f(reduction.get(), reduction->memory());
     f(features.get(), features->memory());
   }
@@ -109,11 +143,13 @@ public:
   std::size_t memory() const
   {
     std::unordered_set<const void*> seen;
-    current().for_each_part([&](const void* p, std::size_t) { seen.insert(p); });
+    current().for_each_part([&](const void* p, std::size_t) { return seen.insert(p).second; });
     std::size_t bytes = 0;
     for(const State_ptr& s : m_states)
       s->for_each_part([&](const void* p, std::size_t b) {
-        if(seen.insert(p).second) bytes += b;
+        const bool is_new = seen.insert(p).second;
+        if(is_new) bytes += b;
+        return is_new;
       });
     return bytes;
   }

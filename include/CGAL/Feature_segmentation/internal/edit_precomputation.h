@@ -14,6 +14,7 @@
 #include <CGAL/Feature_segmentation/Solver_sequence.h>
 #include <CGAL/Feature_segmentation/Watershed_distance.h>
 #include <CGAL/Feature_segmentation/internal/crease_cut.h>
+#include <CGAL/Feature_segmentation/internal/edge_alphas.h>
 #include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
 #include <CGAL/Feature_segmentation/internal/stage_times.h>
 
@@ -119,7 +120,7 @@ public:
   std::size_t first_tie = 0;          // index of the first tie in the weight terms
   std::vector<Compact_index> tie_begin; // per input edge: its ties, CSR (empty without cut)
   Feature_lines<TriangleMesh> lines;  // on the working mesh, without sketches and creases
-  std::vector<double> alpha_e;        // the initial alpha_e of every edge and tie
+  Edge_alphas alpha_e;                // the initial alpha_e of every edge and tie
   bool anisotropic = true, reduced = true;
   Solver solver;
 
@@ -144,7 +145,7 @@ private:
     if(!cut.is_cut())
     {
       prepare_segmentation_data(tm, np, opt, d, lines, false, &times); // checked above
-      alpha_e = edge_alphas(d, opt, np);
+      alpha_e = Edge_alphas(edge_alphas(d, opt, np), opt.alpha);
       first_tie = d.edge_vertices.size();
       d.features.number_of_feature_edges = count_feature_edges(d.features);
       return;
@@ -239,7 +240,7 @@ private:
       a.push_back(user_alpha(t.crease_edge));
     }
     d.features.number_of_feature_edges = count_feature_edges(d.features);
-    alpha_e.swap(a);
+    alpha_e = Edge_alphas(a, opt.alpha);
   }
 };
 

@@ -40,7 +40,7 @@ public:
     const Precomputation& p = *m_pre;
     auto s = std::make_shared<Edit_state>();
     s->alpha = p.opt.alpha;
-    s->alpha_e = std::make_shared<const std::vector<double> >(p.alpha_e);
+    s->alpha_e = p.alpha_e; // shared
     // the initial features are those of the precomputation's data (aliasing: no copy)
     s->features = std::shared_ptr<const Feature_terms>(m_pre, &p.data->features);
     auto red = std::make_shared<Reduction>();
@@ -52,7 +52,7 @@ public:
     std::vector<std::size_t> group(red->os.number_of_segments);
     for(std::size_t i = 0; i < group.size(); ++i) group[i] = i;
     s->group = std::make_shared<const std::vector<std::size_t> >(std::move(group));
-    s->labels = std::make_shared<const std::vector<std::size_t> >();
+    s->segment_patch = std::make_shared<const std::vector<std::size_t> >();
     solve(*s, nullptr);
     m_history = Edit_history(std::move(s));
   }
@@ -63,17 +63,12 @@ public:
   Edit_history& history() { return m_history; }
   const Stage_times& stage_times() const { return m_times; }
 
-  double weight(const Edit_state& s, std::size_t e) const { return s.features->weight(e, (*s.alpha_e)[e]); }
-
+  // The global edit: the state's alpha moves, its alpha_e follow it (edge_alphas.h);
+  // nothing per edge or per vertex is written.
   std::size_t set_alpha(double a)
   {
     return edit([&](Edit_state& s) {
-      const double shift = a - s.alpha;
-      auto alpha_e = std::make_shared<std::vector<double> >(*s.alpha_e);
-      for(std::size_t e = 0; e < alpha_e->size(); ++e)
-        if(s.features->is_feature_edge[e]) (*alpha_e)[e] += shift;
       s.alpha = a;
-      s.alpha_e = alpha_e;
       solve(s, nullptr);
       return true;
     });
@@ -89,20 +84,18 @@ public:
       if(touched.empty()) return false;
       const Precomputation& p = *m_pre;
       const TriangleMesh& tm = p.working_mesh();
-      auto alpha_e = std::make_shared<std::vector<double> >(*s.alpha_e);
-      std::vector<char> done(alpha_e->size(), 0);
+      std::vector<std::size_t> edges; // each changed once
       for(face_descriptor f : faces)
         for(auto h : CGAL::halfedges_around_face(halfedge(p.working_face(f), tm), tm))
         {
           const std::size_t e = p.working_indexing().edge_id(h);
           const auto t = p.ties_of_working_edge(e);
-          for(std::size_t i = t.first; i < t.second; ++i) // a crease's ties
-            if(!done[i]) { done[i] = 1; (*alpha_e)[i] = change((*alpha_e)[i]); }
-          if(!s.features->is_feature_edge[e] || done[e]) continue;
-          done[e] = 1;
-          (*alpha_e)[e] = change((*alpha_e)[e]);
+          for(std::size_t i = t.first; i < t.second; ++i) edges.push_back(i); // a crease's ties
+          if(s.features->is_feature_edge[e]) edges.push_back(e);
         }
-      s.alpha_e = alpha_e;
+      std::sort(edges.begin(), edges.end());
+      edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+      for(std::size_t e : edges) s.alpha_e.set(e, change(s.alpha_of(e)), true, s.alpha); // feature edges
       solve_patches(s, touched, nullptr);
       return true;
     });
@@ -114,25 +107,27 @@ public:
     return edit([&](Edit_state& s) {
       const std::set<std::size_t> touched = patches_of(s, faces);
       if(touched.size() < 2) return false;
-      const std::vector<std::size_t>& seg = s.reduction->os.vertex_segment;
+      const std::vector<std::size_t>& old_patch = *s.segment_patch;
       const std::vector<std::size_t>& old_group = *s.group;
+      std::vector<char> patch_in(s.number_of_patches, 0);
+      for(std::size_t t : touched) patch_in[t] = 1;
       std::size_t target_group = std::size_t(-1);
       std::vector<char> group_in(old_group.size(), 0);
-      for(std::size_t v = 0; v < seg.size(); ++v)
-        if(touched.count((*s.labels)[v]))
+      for(std::size_t i = 0; i < old_patch.size(); ++i)
+        if(patch_in[old_patch[i]])
         {
-          group_in[old_group[seg[v]]] = 1;
-          target_group = (std::min)(target_group, old_group[seg[v]]);
+          group_in[old_group[i]] = 1;
+          target_group = (std::min)(target_group, old_group[i]);
         }
       auto group = std::make_shared<std::vector<std::size_t> >(old_group);
       for(std::size_t& g : *group)
         if(group_in[g]) g = target_group;
-      auto labels = std::make_shared<std::vector<std::size_t> >(*s.labels);
+      auto patch = std::make_shared<std::vector<std::size_t> >(old_patch);
       const std::size_t merged = *touched.begin();
-      for(std::size_t& l : *labels) if(touched.count(l)) l = merged;
-      s.number_of_patches = normalize_labels(*labels);
+      for(std::size_t& l : *patch) if(patch_in[l]) l = merged;
+      s.number_of_patches = normalize_patches(*s.reduction, *patch);
       s.group = group;
-      s.labels = labels;
+      s.segment_patch = patch;
       return true;
     });
   }
@@ -149,39 +144,39 @@ public:
       const Segmentation_data<TriangleMesh>& d = *p.data;
       const TriangleMesh& tm = p.working_mesh();
       auto features = std::make_shared<Feature_terms>(*s.features);
-      auto alpha_e = std::make_shared<std::vector<double> >(*s.alpha_e);
-      const std::vector<std::size_t>& labels = *s.labels;
       std::vector<std::size_t> faces;
       std::set<std::size_t> touched;
       for(const Sketch_crossing& c : crossings)
       {
+        // its alpha_e before (read as a feature edge if an earlier crossing made it one)
+        const double before = s.alpha_e(c.edge, features->is_feature_edge[c.edge] != 0, s.alpha);
         features->add_point(c.edge, c.point);
         features->is_feature_edge[c.edge] = 1;
-        (*alpha_e)[c.edge] = (std::max)((*alpha_e)[c.edge], sketch_alpha);
+        s.alpha_e.set(c.edge, (std::max)(before, sketch_alpha), true, s.alpha);
         auto h = halfedge(d.idx.edge_at(c.edge), tm);
         for(auto hh : { h, opposite(h, tm) })
           if(!is_border(hh, tm)) faces.push_back(d.idx.face_id(hh));
-        touched.insert(labels[d.edge_vertices[c.edge].first]);
-        touched.insert(labels[d.edge_vertices[c.edge].second]);
+        touched.insert(s.vertex_patch(d.edge_vertices[c.edge].first));
+        touched.insert(s.vertex_patch(d.edge_vertices[c.edge].second));
       }
       std::sort(faces.begin(), faces.end());
       faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
       Edge_weight_terms<TriangleMesh>::update_faces(d.idx, d.points, *d.metrics, *features, faces);
       features->number_of_feature_edges = p.count_feature_edges(*features);
       // redo the oversegmentation inside the touched patches
-      std::vector<char> region(labels.size(), 0);
-      for(std::size_t v = 0; v < region.size(); ++v) region[v] = touched.count(labels[v]) ? 1 : 0;
+      std::vector<char> region(s.reduction->os.vertex_segment.size(), 0);
+      for(std::size_t v = 0; v < region.size(); ++v) region[v] = touched.count(s.vertex_patch(v)) ? 1 : 0;
       auto red = std::make_shared<Reduction>();
-      std::vector<std::size_t> group;
+      std::vector<std::size_t> group, patch;
       {
         m_times.oversegmentation = 0;
         Stage_timer timer(&m_times.oversegmentation);
-        rebuild_reduction_in(s, *features, region, *red, group);
+        rebuild_reduction_in(s, *features, region, *red, group, patch);
       }
       s.features = features;
-      s.alpha_e = alpha_e;
       s.reduction = red;
       s.group = std::make_shared<const std::vector<std::size_t> >(std::move(group));
+      s.segment_patch = std::make_shared<const std::vector<std::size_t> >(std::move(patch));
       solve_patches(s, touched, &region);
       return true;
     });
@@ -201,7 +196,7 @@ public:
     {
       check_face(f);
       for(auto h : CGAL::halfedges_around_face(halfedge(p.working_face(f), tm), tm))
-        touched.insert((*s.labels)[p.working_indexing().id(target(h, tm))]);
+        touched.insert(s.vertex_patch(p.working_indexing().id(target(h, tm))));
     }
     return touched;
   }
@@ -215,7 +210,6 @@ public:
     const Segmentation_data<TriangleMesh>& d = *m_pre->data;
     const Mesh_indexing<TriangleMesh>& idx = d.idx;
     const TriangleMesh& tm = idx.mesh();
-    const std::vector<std::size_t>& labels = *s.labels;
     const auto h = halfedge(idx.face_at(f), tm);
     const std::array<decltype(h), 3> hs = { h, next(h, tm), prev(h, tm) };
     std::array<std::size_t, 3> l;
@@ -223,7 +217,7 @@ public:
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t v = idx.id(source(hs[k], tm)); // corner k: the source of edge k
-      l[k] = labels[v];
+      l[k] = s.vertex_patch(v);
       p[k] = d.points[v];
     }
     if(l[0] == l[1] && l[1] == l[2]) return l[0];
@@ -265,7 +259,11 @@ private:
   {
     const Precomputation& p = *m_pre;
     r.os = p.reduced ? compute_oversegmentation(*p.data, features, p.anisotropic, region) : singletons(region);
-    if(region == nullptr) r.rg.build(r.os.vertex_segment, r.os.number_of_segments, p.data->edge_vertices);
+    if(region == nullptr)
+    {
+      r.rg.build(r.os.vertex_segment, r.os.number_of_segments, p.data->edge_vertices);
+      r.order_segments();
+    }
   }
 
   Oversegmentation singletons(const std::vector<char>* region) const
@@ -278,10 +276,10 @@ private:
   }
 
   // The oversegmentation of state `s` with its segments inside `region` redone on
-  // `features`: the segments outside keep their merge groups (ids compacted), the new
-  // ones are free.
+  // `features`: the segments outside keep their merge groups (ids compacted) and their
+  // patches, the new ones are free (patch 0 until solved).
   void rebuild_reduction_in(const Edit_state& s, const Feature_terms& features, const std::vector<char>& region,
-                            Reduction& out, std::vector<std::size_t>& group) const
+                            Reduction& out, std::vector<std::size_t>& group, std::vector<std::size_t>& patch) const
   {
     Reduction local;
     build_reduction(local, features, &region);
@@ -289,14 +287,21 @@ private:
     const std::vector<std::size_t>& old_group = *s.group;
     std::vector<std::size_t> renum(s.reduction->os.number_of_segments, std::size_t(-1));
     group.clear();
+    patch.clear();
     std::size_t k = 0;
     for(std::size_t v = 0; v < region.size(); ++v)
     {
       if(region[v]) continue;
       std::size_t& r = renum[old_seg[v]];
-      if(r == std::size_t(-1)) { r = k++; group.push_back(old_group[old_seg[v]]); }
+      if(r == std::size_t(-1))
+      {
+        r = k++;
+        group.push_back(old_group[old_seg[v]]);
+        patch.push_back((*s.segment_patch)[old_seg[v]]);
+      }
     }
     const std::size_t first_new = k;
+    patch.resize(first_new + local.os.number_of_segments, 0);
     out.os.vertex_segment.resize(region.size());
     for(std::size_t v = 0; v < region.size(); ++v)
       out.os.vertex_segment[v] = region[v] ? first_new + local.os.vertex_segment[v] : renum[old_seg[v]];
@@ -310,20 +315,45 @@ private:
     }
     for(std::size_t i = 0; i < local.os.number_of_segments; ++i) group.push_back(ng++);
     out.rg.build(out.os.vertex_segment, out.os.number_of_segments, m_pre->data->edge_vertices);
+    out.order_segments();
   }
 
-  // Re-solves the patches in `touched` (given by label; or by `vertex_region` after a
-  // sketch, whose segments are new).
+  // Re-solves the patches in `touched` (given by patch; or by `vertex_region` after a
+  // sketch, whose segments are new and have no patch yet).
   void solve_patches(Edit_state& s, const std::set<std::size_t>& touched, const std::vector<char>* vertex_region)
   {
     const std::vector<std::size_t>& group = *s.group;
     const std::size_t ngroups = *std::max_element(group.begin(), group.end()) + 1;
     std::vector<char> in(ngroups, 0);
-    const std::vector<std::size_t>& seg = s.reduction->os.vertex_segment;
-    for(std::size_t v = 0; v < seg.size(); ++v)
-      if(vertex_region != nullptr ? (*vertex_region)[v] != 0 : touched.count((*s.labels)[v]) != 0)
-        in[group[seg[v]]] = 1;
+    if(vertex_region != nullptr)
+    {
+      const std::vector<std::size_t>& seg = s.reduction->os.vertex_segment;
+      for(std::size_t v = 0; v < seg.size(); ++v)
+        if((*vertex_region)[v]) in[group[seg[v]]] = 1;
+    }
+    else
+    {
+      std::vector<char> patch_in(s.number_of_patches, 0);
+      for(std::size_t t : touched) patch_in[t] = 1;
+      const std::vector<std::size_t>& patch = *s.segment_patch;
+      for(std::size_t i = 0; i < patch.size(); ++i)
+        if(patch_in[patch[i]]) in[group[i]] = 1;
+    }
     solve(s, &in);
+  }
+
+  // Renumbers the patches of the oversegments 0, 1, ... in the order of their first
+  // vertex (as normalize_labels() on the vertex labels would); returns their number.
+  static std::size_t normalize_patches(const Reduction& r, std::vector<std::size_t>& patch)
+  {
+    if(patch.empty()) return 0;
+    const std::size_t none = std::size_t(-1);
+    std::vector<std::size_t> new_id(*std::max_element(patch.begin(), patch.end()) + 1, none);
+    std::size_t k = 0;
+    for(std::size_t i : r.segments_in_vertex_order)
+      if(new_id[patch[i]] == none) new_id[patch[i]] = k++;
+    for(std::size_t& l : patch) l = new_id[l];
+    return k;
   }
 
   // Clusters the groups of oversegments whose `group_in_region` is set (all if null);
@@ -349,7 +379,7 @@ private:
         const std::size_t a = node[group[r.rg.edges[i].first]], b = node[group[r.rg.edges[i].second]];
         if(a == std::size_t(-1) || b == std::size_t(-1) || a == b) continue;
         double sum = 0;
-        for(std::size_t k = r.rg.cross_begin[i]; k < r.rg.cross_begin[i + 1]; ++k) sum += weight(s, r.rg.cross[k]);
+        for(std::size_t k = r.rg.cross_begin[i]; k < r.rg.cross_begin[i + 1]; ++k) sum += s.weight(r.rg.cross[k]);
         graph.add_edge(a, b, sum);
       }
     }
@@ -362,17 +392,19 @@ private:
     CGAL_postcondition(lab.size() == n);
     m_times.labels = 0;
     Stage_timer timer(&m_times.labels);
+    // the patch of every oversegment: the solved ones get new ids after the old ones
     const bool everything = (group_in_region == nullptr);
     const std::size_t offset = everything ? 0 : s.number_of_patches;
-    auto labels = everything ? std::make_shared<std::vector<std::size_t> >(r.os.vertex_segment.size(), 0)
-                             : std::make_shared<std::vector<std::size_t> >(*s.labels);
-    for(std::size_t v = 0; v < labels->size(); ++v)
+    CGAL_assertion(everything || s.segment_patch->size() == r.os.number_of_segments);
+    auto patch = everything ? std::make_shared<std::vector<std::size_t> >(r.os.number_of_segments, 0)
+                            : std::make_shared<std::vector<std::size_t> >(*s.segment_patch);
+    for(std::size_t i = 0; i < patch->size(); ++i)
     {
-      const std::size_t nd = node[group[r.os.vertex_segment[v]]];
-      if(nd != std::size_t(-1)) (*labels)[v] = offset + lab[nd];
+      const std::size_t nd = node[group[i]];
+      if(nd != std::size_t(-1)) (*patch)[i] = offset + lab[nd];
     }
-    s.number_of_patches = normalize_labels(*labels);
-    s.labels = labels;
+    s.number_of_patches = normalize_patches(r, *patch);
+    s.segment_patch = patch;
   }
 
   std::shared_ptr<const Precomputation> m_pre;

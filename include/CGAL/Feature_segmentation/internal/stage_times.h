@@ -23,7 +23,7 @@ struct Stage_times
   // the last solve (construction or edit)
   double graph = 0;                   // the weights of the graph solved (G' or G)
   double solve = 0;                   // the correlation clustering solver
-  double labels = 0;                  // the vertex labels from the solver's clusters
+  double labels = 0;                  // the patch ids of the oversegments from the clusters
   double last_edit = 0;               // the whole last edit, all its stages (0 before any edit)
 };
 
