@@ -42,10 +42,10 @@ struct Row
   double solve_median = -1; // library edits: the weights of G', the solve, the patch ids
 };
 
-std::string two_decimals(double x)
+std::string three_decimals(double x)
 {
   std::ostringstream o;
-  o << std::fixed << std::setprecision(2) << x;
+  o << std::fixed << std::setprecision(3) << x;
   return o.str();
 }
 
@@ -272,8 +272,8 @@ int main(int argc, char** argv)
   for(const Row& r : rows)
   {
     std::cout << "| " << r.mesh << " | " << r.faces << " | " << r.op << " | " << r.patches << " | " << std::fixed
-              << std::setprecision(2) << r.edit_median << " | " << r.edit_max << " | "
-              << (r.solve_median < 0 ? std::string("-") : two_decimals(r.solve_median)) << " | "
+              << std::setprecision(3) << r.edit_median << " | " << r.edit_max << " | "
+              << (r.solve_median < 0 ? std::string("-") : three_decimals(r.solve_median)) << " | "
               << r.labels_median << " |\n"
               << std::defaultfloat;
     csv << fs_bench::csv_text(r.mesh) << ',' << r.faces << ',' << r.op << ',' << r.patches << ',' << r.edit_median
