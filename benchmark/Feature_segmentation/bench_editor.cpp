@@ -164,7 +164,9 @@ void bench(const std::string& name, const std::string& path, int repeat, std::ve
 // The library's own edits, without the editor: Feature_aligned_segmentation at its
 // defaults; `repeat` times each: set_alpha() between 0.6 and 0.9, add_to_alpha() of
 // +0.3 on the faces within 5% of the diagonal of the centroid of face F/3 (then undo),
-// merge_patches() of the first face and the first face of another patch (then undo).
+// merge_patches() of the first face and the first face of another patch (then undo),
+// add_sketch() through the centroids of the region's first, middle and last faces (then
+// undo). The construction's time goes to the standard error.
 // "solve" is the part of the edit that builds the weights of G', solves and numbers
 // the patches (stage_times: graph + solve + labels); "labels" the time of
 // vertex_patches() after it, what a caller who asks for every vertex's patch pays.
@@ -174,7 +176,9 @@ void bench_library(const std::string& name, const std::string& path, int repeat,
   Mesh m;
   std::string error;
   if(!fs_bench::read_mesh(path, m, error)) throw std::runtime_error(path + ": " + error);
+  const auto start = std::chrono::steady_clock::now();
   CGAL::Feature_segmentation::Feature_aligned_segmentation<Mesh> seg(m);
+  std::cerr << name << ": Feature_aligned_segmentation built in " << seconds_since(start) << " s" << std::endl;
   auto patch_map = m.add_property_map<Mesh::Vertex_index, std::size_t>("v:bench_patch").first;
   auto centroid = [&](Mesh::Face_index f) {
     const auto h = m.halfedge(f);
@@ -187,11 +191,13 @@ void bench_library(const std::string& name, const std::string& path, int repeat,
   std::vector<Mesh::Face_index> region;
   for(auto f : m.faces())
     if(CGAL::squared_distance(centroid(f), center) <= CGAL::square(0.05 * diagonal)) region.push_back(f);
-  auto measure = [&](const std::string& op, auto edit_once, auto after) {
+  // `solves`: whether the edit runs the solver (a merge does not: no "solve" then)
+  auto measure = [&](const std::string& op, auto edit_once, auto after, bool solves) {
     std::vector<double> edit, labels, solve;
     std::size_t patches = 0;
     for(int r = 0; r < repeat; ++r)
     {
+      const std::size_t recorded = seg.number_of_recorded_edits();
       auto t0 = std::chrono::steady_clock::now();
       patches = edit_once(r);
       edit.push_back(seconds_since(t0));
@@ -200,20 +206,26 @@ void bench_library(const std::string& name, const std::string& path, int repeat,
       t0 = std::chrono::steady_clock::now();
       seg.vertex_patches(patch_map);
       labels.push_back(seconds_since(t0));
-      after();
+      after(seg.number_of_recorded_edits() > recorded);
     }
     rows.push_back({name, op + " (library)", num_faces(m), patches, 1000 * median(edit),
-                    1000 * *std::max_element(edit.begin(), edit.end()), 1000 * median(labels), 1000 * median(solve)});
+                    1000 * *std::max_element(edit.begin(), edit.end()), 1000 * median(labels),
+                    solves ? 1000 * median(solve) : -1});
   };
-  auto nothing = [] {};
-  auto undo = [&] { seg.undo(); };
-  measure("set_alpha", [&](int r) { return seg.set_alpha(r % 2 ? 0.6 : 0.9); }, nothing);
-  measure("add_to_alpha", [&](int) { return seg.add_to_alpha(region, 0.3); }, undo);
+  auto nothing = [](bool) {};
+  auto undo = [&](bool recorded) { if(recorded) seg.undo(); }; // an edit that changed nothing records no state
+  measure("set_alpha", [&](int r) { return seg.set_alpha(r % 2 ? 0.6 : 0.9); }, nothing, true);
+  measure("add_to_alpha", [&](int) { return seg.add_to_alpha(region, 0.3); }, undo, true);
   Mesh::Face_index other = *m.faces().begin();
   for(auto f : m.faces())
     if(seg.patch(f) != seg.patch(*m.faces().begin())) { other = f; break; }
   const std::vector<Mesh::Face_index> stroke = { *m.faces().begin(), other };
-  measure("merge_patches", [&](int) { return seg.merge_patches(stroke); }, undo);
+  measure("merge_patches", [&](int) { return seg.merge_patches(stroke); }, undo, false);
+  typedef CGAL::Feature_segmentation::Feature_aligned_segmentation<Mesh>::Sketch_point Sketch_point;
+  std::vector<Sketch_point> sketch;
+  for(std::size_t i : {std::size_t(0), region.size() / 2, region.size() - 1})
+    sketch.push_back({region[i], centroid(region[i])});
+  measure("add_sketch", [&](int) { return seg.add_sketch(sketch); }, undo, true);
   std::cerr << name << ": library edits measured (" << seg.number_of_oversegments() << " oversegments)" << std::endl;
 }
 
@@ -248,8 +260,10 @@ int main(int argc, char** argv)
                                                           : rockerarm + " is absent") << std::endl;
     const std::string big = subdivided_fandisk(2);
     bench("fandisk x16", big, repeat, rows);
-    // the library's edits at three sizes of one shape (G' is alike at every size)
+    // the library's edits at three sizes of one shape (G' is alike at every size), and
+    // on rockerarm (a G' of thousands of nodes)
     bench_library("fandisk", std::string(FS_MESH_DIR) + "/fandisk.off", repeat, rows);
+    if(!data.empty() && std::filesystem::exists(rockerarm)) bench_library("rockerarm", rockerarm, repeat, rows);
     bench_library("fandisk x16", big, repeat, rows);
     std::filesystem::remove(big);
     const std::string bigger = subdivided_fandisk(3);

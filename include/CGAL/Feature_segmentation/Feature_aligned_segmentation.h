@@ -34,24 +34,26 @@ namespace Feature_segmentation {
 ///
 /// | edit | what it recomputes | cost |
 /// |---|---|---|
-/// | `set_alpha()` (global refine/coarsen) | the weights of G', the clustering of G' | a solve on G' |
-/// | `add_to_alpha()`, `multiply_alpha()` (local) | the same, the clustering on the patches the region touches only | the region's edges + a solve on those patches |
+/// | `set_alpha()` (global refine/coarsen) | the weights of G', the clustering of G' | the weights of G' (C) + a solve on G' |
+/// | `add_to_alpha()`, `multiply_alpha()` (local) | the same, the clustering on the patches the region touches only | the region's edges + O(C) + a solve on those patches |
 /// | `merge_patches()` | the patches (a constraint that later solves keep) | O(N) |
 /// | `add_sketch()` | terms of the faces around the sketch, the oversegmentation inside the patches it touches, G', their clustering | O(F log F + E log E) + solve on those patches |
 /// | `undo()`, `redo()` | nothing: moves along the history of states | O(1) |
 ///
-/// E, F are the mesh's edges and faces, N the nodes of G' (oversegments); G' is much
-/// smaller than the mesh (6,453 nodes and 18,374 edges on rockerarm remeshed to 196,566
-/// faces, against 98,283 vertices and 294,849 edges). No edit but a sketch reads or
-/// writes anything per vertex or per edge of the mesh: the patches are kept per
-/// oversegment (a vertex's patch is its oversegment's, read when asked: `patch()`,
-/// `vertex_patches()`, `face_patches()`), and the `alpha_e` of the feature edges follow
-/// alpha without being rewritten (a local edit writes those of its region only, in
-/// chunks of 4096 edges shared with the states before).
+/// E, F are the mesh's edges and faces, N the nodes of G' (oversegments), C the mesh
+/// edges between two oversegments, whose weights sum to those of G'; G' is much smaller
+/// than the mesh (6,453 nodes and 18,374 edges on rockerarm remeshed to 196,566 faces,
+/// against 98,283 vertices and 294,849 edges). No edit but a sketch visits every vertex
+/// or every edge of the mesh: the patches are kept per oversegment (a vertex's patch is
+/// its oversegment's, read when asked: `patch()`, `vertex_patches()`, `face_patches()`),
+/// and the `alpha_e` of the feature edges follow alpha without being rewritten (a local
+/// edit writes those of its region only, copying the chunks of 4096 edges it writes
+/// into and the table of chunks, one pointer per 4096 edges).
 ///
 /// Each edit makes a new state that shares with the one before every part the edit leaves
-/// alone (an alpha edit: everything but one patch id per oversegment; a local edit also
-/// the chunks of per-edge parameters it writes; a sketch also the feature terms and G');
+/// alone (a global alpha edit: everything but one patch id per oversegment; a local edit
+/// also the chunks of per-edge parameters it writes; a merge the merge groups and the
+/// patch ids; a sketch also the feature terms and G');
 /// the history of states is bounded by memory (`set_undo_memory_limit()`), not by a
 /// number of edits, and undo and redo are exact. A copy of the object shares the
 /// precomputation and the states (it is cheap), and edits each copy on its own.
