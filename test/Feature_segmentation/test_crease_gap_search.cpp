@@ -42,10 +42,13 @@ void check_hierarchy_against_faces(const SM& m, const std::vector<std::size_t>& 
   const Indexing idx(m);
   const std::vector<double> angle = raw_angles(idx, m);
   const auto vpm = get(CGAL::vertex_point, m);
-  const FS::internal::Crease_gap_search<SM, decltype(vpm)> search(idx, vpm, angle, angle, crease_angle);
+  const FS::internal::Edge_geometry geometry = FS::internal::edge_geometry(idx, vpm);
+  const FS::internal::Crease_gap_search<SM> search(idx, geometry, angle, angle, crease_angle);
   BOOST_TEST(search.number_of_levels() >= min_levels);
-  const auto faces = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, crease_angle, candidates, false, 0);
-  const auto clusters = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, crease_angle, candidates, false);
+  const auto faces =
+    FS::internal::crease_gap_lengths(idx, geometry, angle, angle, crease_angle, candidates, false, 0);
+  const auto clusters =
+    FS::internal::crease_gap_lengths(idx, geometry, angle, angle, crease_angle, candidates, false);
   std::size_t mismatches = 0, with_crease = 0, with_band = 0;
   for(std::size_t i = 0; i < candidates.size(); ++i)
   {
@@ -78,6 +81,7 @@ BOOST_AUTO_TEST_CASE(cube_edges_inside_a_ball)
   const Indexing idx(m);
   const std::vector<double> angle = raw_angles(idx, m);
   const auto vpm = get(CGAL::vertex_point, m);
+  const FS::internal::Edge_geometry geometry = FS::internal::edge_geometry(idx, vpm);
   const double r = 0.05 * std::sqrt(48.);
   std::vector<std::size_t> candidates;
   std::vector<double> expected;
@@ -95,7 +99,7 @@ BOOST_AUTO_TEST_CASE(cube_edges_inside_a_ball)
   BOOST_REQUIRE(candidates.size() == 40u);
   for(int levels : { 0, 8 })
   {
-    const auto lengths = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, 20., candidates, false, levels);
+    const auto lengths = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false, levels);
     for(std::size_t i = 0; i < candidates.size(); ++i)
     {
       BOOST_TEST(lengths[i].crease == expected[i], boost::test_tools::tolerance(1e-9));
@@ -157,14 +161,15 @@ BOOST_AUTO_TEST_CASE(only_candidates_near_band_edges_are_searched)
   const Indexing idx(m);
   const std::vector<double> angle = raw_angles(idx, m);
   const auto vpm = get(CGAL::vertex_point, m);
+  const FS::internal::Edge_geometry geometry = FS::internal::edge_geometry(idx, vpm);
   std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
     if(angle[e] >= 20) candidates.push_back(e);
   BOOST_REQUIRE(candidates.size() == 60u); // the crease line u = 0.5, 60 grid edges
   const std::vector<std::size_t> near =
-    FS::internal::candidates_near_band_edges(idx, vpm, angle, angle, 20., candidates);
-  const auto lengths = FS::internal::crease_gap_lengths(idx, vpm, angle, angle, 20., candidates, false);
-  const double r = FS::internal::Crease_gap_search<SM, decltype(vpm)>(idx, vpm, angle, angle, 20.).radius();
+    FS::internal::candidates_near_band_edges(geometry, angle, angle, 20., candidates);
+  const auto lengths = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false);
+  const double r = FS::internal::Crease_gap_search<SM>(idx, geometry, angle, angle, 20.).radius();
   std::size_t with_band = 0;
   for(std::size_t i = 0; i < candidates.size(); ++i)
   {
@@ -193,8 +198,8 @@ BOOST_AUTO_TEST_CASE(only_candidates_near_band_edges_are_searched)
   for(std::size_t e = 0; e < cidx.number_of_edges(); ++e)
     if(cangle[e] >= 20) ccandidates.push_back(e);
   BOOST_TEST(ccandidates.size() == 120u); // 12 cube edges of 10 mesh edges
-  BOOST_TEST(FS::internal::candidates_near_band_edges(cidx, get(CGAL::vertex_point, cube), cangle, cangle, 20.,
-                                                      ccandidates).empty());
+  const FS::internal::Edge_geometry cgeometry = FS::internal::edge_geometry(cidx, get(CGAL::vertex_point, cube));
+  BOOST_TEST(FS::internal::candidates_near_band_edges(cgeometry, cangle, cangle, 20., ccandidates).empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -83,45 +83,15 @@ public:
   std::size_t number_of_edges() const { return m_ne; }
   std::size_t number_of_faces() const { return m_nf; }
 
-  std::size_t id(vertex_descriptor v) const
-  {
-    if constexpr(Is_surface_mesh<TriangleMesh>::value)
-      if(m_identity) return std::size_t(v.idx());
-    return get(*m_vimap, v);
-  }
-  std::size_t id(face_descriptor f) const
-  {
-    if constexpr(Is_surface_mesh<TriangleMesh>::value)
-      if(m_identity) return std::size_t(f.idx());
-    return get(*m_fimap, f);
-  }
-  std::size_t halfedge_id(halfedge_descriptor h) const
-  {
-    if constexpr(Is_surface_mesh<TriangleMesh>::value)
-      if(m_identity) return std::size_t(h.idx());
-    return get(*m_himap, h);
-  }
+  std::size_t id(vertex_descriptor v) const { return index_of(v, m_vimap); }
+  std::size_t id(face_descriptor f) const { return index_of(f, m_fimap); }
+  std::size_t halfedge_id(halfedge_descriptor h) const { return index_of(h, m_himap); }
   std::size_t id(edge_descriptor e) const { return halfedge_id(halfedge(e, m_tm)) / 2; }
   std::size_t edge_id(halfedge_descriptor h) const { return halfedge_id(h) / 2; }
 
-  vertex_descriptor vertex_at(std::size_t i) const
-  {
-    if constexpr(Is_surface_mesh<TriangleMesh>::value)
-      if(m_identity) return vertex_descriptor(typename TriangleMesh::size_type(i));
-    return m_vertices[i];
-  }
-  face_descriptor face_at(std::size_t i) const
-  {
-    if constexpr(Is_surface_mesh<TriangleMesh>::value)
-      if(m_identity) return face_descriptor(typename TriangleMesh::size_type(i));
-    return m_faces[i];
-  }
-  edge_descriptor edge_at(std::size_t i) const
-  {
-    if constexpr(Is_surface_mesh<TriangleMesh>::value)
-      if(m_identity) return edge_descriptor(typename TriangleMesh::size_type(i));
-    return m_edges[i];
-  }
+  vertex_descriptor vertex_at(std::size_t i) const { return element_at(i, m_vertices); }
+  face_descriptor face_at(std::size_t i) const { return element_at(i, m_faces); }
+  edge_descriptor edge_at(std::size_t i) const { return element_at(i, m_edges); }
   // The elements in id order.
   auto vertex_list() const { return make_range(m_nv, [this](std::size_t i) { return vertex_at(i); }); }
   auto face_list() const { return make_range(m_nf, [this](std::size_t i) { return face_at(i); }); }
@@ -137,6 +107,25 @@ public:
   static constexpr std::size_t npos = std::size_t(-1);
 
 private:
+  // The id of `x`: its own index on a Surface_mesh without removed elements, else the
+  // map's value.
+  template <typename Descriptor, typename Map>
+  std::size_t index_of(Descriptor x, const std::optional<Map>& map) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return std::size_t(x.idx());
+    return get(*map, x);
+  }
+  // The element of id `i`: the same index on a Surface_mesh without removed elements,
+  // else the list's entry.
+  template <typename Descriptor>
+  Descriptor element_at(std::size_t i, const std::vector<Descriptor>& list) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value)
+      if(m_identity) return Descriptor(typename TriangleMesh::size_type(i));
+    return list[i];
+  }
+
   template <typename At>
   static auto make_range(std::size_t n, At at)
   {

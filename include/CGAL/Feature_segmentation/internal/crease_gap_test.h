@@ -6,6 +6,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_GAP_TEST_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/breadth_first_clusters.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/AABB_segment_primitive.h>
@@ -88,6 +89,37 @@ double crease_gap_ball_radius(const std::vector<Point>& points, const std::vecto
   return (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
 }
 
+// What the gap test reads of the mesh's geometry, made once: the vertices' positions
+// and every edge's two vertices (32-bit ids).
+struct Edge_geometry
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<std::uint32_t, 2> > ends;
+};
+
+template <typename TriangleMesh, typename VPM>
+Edge_geometry edge_geometry(const Mesh_indexing<TriangleMesh>& idx, VPM vpm)
+{
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges(), nv = idx.number_of_vertices();
+  if((std::max)({ nf, ne, nv }) >= std::size_t(std::uint32_t(-1)))
+    throw std::length_error("the crease gap test stores element ids in 32 bits");
+  Edge_geometry g;
+  g.points.resize(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const auto& p = get(vpm, idx.vertex_at(v));
+    g.points[v] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  g.ends.resize(ne);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    g.ends[e] = { std::uint32_t(idx.id(source(h, tm))), std::uint32_t(idx.id(target(h, tm))) };
+  }
+  return g;
+}
+
 // The search behind the gap test. The ball of a candidate holds a fixed share of the
 // surface, so a search face by face costs the faces of the ball, which grow with the
 // resolution (fandisk at 828k faces: 6,900 faces per ball, for each of its 7,008
@@ -101,7 +133,7 @@ double crease_gap_ball_radius(const std::vector<Point>& points, const std::vecto
 // all larger than a ball are not kept. The lengths are those of the face-by-face search
 // (`max_levels` 0) up to the order of the additions: a cluster with a zero-length edge,
 // which the face search does not cross, is never taken whole.
-template <typename TriangleMesh, typename VPM>
+template <typename TriangleMesh>
 class Crease_gap_search
 {
   typedef std::uint32_t Index;
@@ -121,30 +153,22 @@ class Crease_gap_search
   };
 
 public:
-  // `max_levels` 0: the search face by face.
-  Crease_gap_search(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
+  // `geometry` is edge_geometry(idx, the vertex point map); `max_levels` 0: the search
+  // face by face.
+  Crease_gap_search(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry, const std::vector<double>& angle,
                     const std::vector<double>& band_angle, double crease_angle, int max_levels = 8)
-    : m_idx(idx), m_crease_angle(crease_angle)
+    : m_idx(idx), m_crease_angle(crease_angle), m_points(std::move(geometry.points)), m_ends(std::move(geometry.ends))
   {
     const TriangleMesh& tm = idx.mesh();
-    const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges(), nv = idx.number_of_vertices();
-    if((std::max)({ nf, ne, nv }) >= std::size_t(none))
-      throw std::length_error("the crease gap test stores element ids in 32 bits");
+    const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
+    CGAL_precondition(m_points.size() == idx.number_of_vertices() && m_ends.size() == ne);
     // what the search reads per edge, compactly (it visits millions of edges in no
-    // particular order): its two vertices and what its angles make it
-    m_points.resize(nv);
-    for(std::size_t v = 0; v < nv; ++v)
-    {
-      const auto& p = get(vpm, idx.vertex_at(v));
-      m_points[v] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    }
-    m_ends.resize(ne);
+    // particular order): its two vertices (m_ends) and what its angles make it
     m_kind.resize(ne);
     m_owner.assign(ne, none);
     for(std::size_t e = 0; e < ne; ++e)
     {
       const auto h = halfedge(idx.edge_at(e), tm);
-      m_ends[e] = { Index(idx.id(source(h, tm))), Index(idx.id(target(h, tm))) };
       m_kind[e] = is_crease_gap_band_edge(angle[e], band_angle[e], crease_angle) ? BAND
                   : angle[e] >= crease_angle ? CREASE : OTHER;
       std::size_t f = idx.face_id(h);
@@ -313,35 +337,21 @@ private:
   }
 
   // Groups the n children into connected clusters of about `size`, grown breadth first
-  // from the first child not yet grouped (neighbours(child, out) lists a child's
-  // neighbours); a cluster left under half the size (the growth ran out of children
-  // around it) joins a neighbouring cluster. Returns the number of clusters.
-  template <typename Neighbours>
-  static std::size_t grow_clusters(std::size_t n, std::size_t size, Neighbours neighbours, std::vector<Index>& parent)
+  // from the first child not yet grouped (breadth_first_clusters.h;
+  // for_each_neighbour(child, f) calls f on each neighbour); a cluster left under half
+  // the size (the growth ran out of children around it) joins a neighbouring cluster.
+  // Returns the number of clusters.
+  template <typename ForEachNeighbour>
+  static std::size_t grow_clusters(std::size_t n, std::size_t size, ForEachNeighbour for_each_neighbour,
+                                   std::vector<Index>& parent)
   {
-    parent.assign(n, none);
-    std::vector<Index> queue, around, first(1, 0); // first: the offsets of the clusters in `order`
-    std::vector<Index> order;                       // the children, cluster by cluster
-    order.reserve(n);
-    for(std::size_t seed = 0; seed < n; ++seed)
-    {
-      if(parent[seed] != none) continue;
-      const Index cluster = Index(first.size() - 1);
-      queue.assign(1, Index(seed));
-      parent[seed] = cluster;
-      for(std::size_t j = 0; j < queue.size() && queue.size() < size; ++j)
-      {
-        around.clear();
-        neighbours(queue[j], around);
-        for(Index y : around)
-          if(y != none && parent[y] == none && queue.size() < size) { parent[y] = cluster; queue.push_back(y); }
-      }
-      order.insert(order.end(), queue.begin(), queue.end());
-      first.push_back(Index(order.size()));
-    }
+    Breadth_first_clusters grown;
+    grown.grow(n, size, for_each_neighbour);
+    parent.swap(grown.cluster_of);
     // the small clusters join a neighbour (union-find over the clusters, the root the
     // cluster joined), then the roots are numbered in order
-    const std::size_t m = first.size() - 1;
+    const std::vector<Index>& first = grown.first;
+    const std::size_t m = grown.size();
     std::vector<Index> root(m);
     for(std::size_t c = 0; c < m; ++c) root[c] = Index(c);
     auto find = [&](Index c) { while(root[c] != c) c = root[c] = root[root[c]]; return c; };
@@ -350,10 +360,14 @@ private:
       if(2 * (first[c + 1] - first[c]) >= size) continue;
       for(std::size_t i = first[c]; i < first[c + 1] && root[c] == Index(c); ++i)
       {
-        around.clear();
-        neighbours(order[i], around);
-        for(Index y : around)
-          if(y != none && find(parent[y]) != find(Index(c))) { root[find(Index(c))] = find(parent[y]); break; }
+        bool joined = false; // to the first neighbour in another cluster
+        for_each_neighbour(grown.order[i], [&](Index y) {
+          if(!joined && y != none && find(parent[y]) != find(Index(c)))
+          {
+            root[find(Index(c))] = find(parent[y]);
+            joined = true;
+          }
+        });
       }
     }
     std::vector<Index> number(m, none);
@@ -375,12 +389,12 @@ private:
       Level L;
       const Level* below = level == 0 ? nullptr : &m_levels.back();
       const std::size_t n = level == 0
-        ? grow_clusters(nf, 16, [&](Index f, std::vector<Index>& out) {
-            for(const auto& a : m_adj[f]) out.push_back(a[0]);
+        ? grow_clusters(nf, 16, [&](Index f, const auto& visit) {
+            for(const auto& a : m_adj[f]) visit(a[0]);
           }, L.parent)
-        : grow_clusters(children, 8, [&](Index x, std::vector<Index>& out) {
+        : grow_clusters(children, 8, [&](Index x, const auto& visit) {
             for(std::size_t i = below->border_begin[x]; i < below->border_begin[x + 1]; ++i)
-              out.push_back(face_cluster[below->border[i][0]]);
+              visit(face_cluster[below->border[i][0]]);
           }, L.parent);
       if(level > 0 && n > children / 2) break; // no longer coarsening
       // the children's clusters, and the faces'
@@ -474,16 +488,16 @@ private:
 
 // The gap test's lengths for every edge of `candidates` (by TBB's threads if
 // `parallel`, with the same result at any count); `max_levels` as Crease_gap_search's.
-template <typename TriangleMesh, typename VPM>
-std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
+template <typename TriangleMesh>
+std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry,
                                             const std::vector<double>& angle, const std::vector<double>& band_angle,
                                             double crease_angle, const std::vector<std::size_t>& candidates,
                                             bool parallel = false, int max_levels = 8)
 {
   std::vector<Gap_lengths> out(candidates.size());
   if(candidates.empty()) return out;
-  typedef Crease_gap_search<TriangleMesh, VPM> Search;
-  const Search search(idx, vpm, angle, band_angle, crease_angle, max_levels);
+  typedef Crease_gap_search<TriangleMesh> Search;
+  const Search search(idx, std::move(geometry), angle, band_angle, crease_angle, max_levels);
   auto run = [&](std::size_t first, std::size_t last, typename Search::Work_space& ws) {
     for(std::size_t i = first; i < last; ++i) out[i] = search.lengths(candidates[i], i, ws);
   };
@@ -509,40 +523,28 @@ std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& i
 // 1e-6, far above rounding). The others pass the gap test whatever their ball holds
 // (no band length is at most any share of the crease length), so they need no search:
 // on a clean CAD tessellation, which has no band edge at all, none does.
-template <typename TriangleMesh, typename VPM>
-std::vector<std::size_t> candidates_near_band_edges(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
-                                                    const std::vector<double>& angle,
-                                                    const std::vector<double>& band_angle, double crease_angle,
-                                                    const std::vector<std::size_t>& candidates)
+inline std::vector<std::size_t> candidates_near_band_edges(const Edge_geometry& g, const std::vector<double>& angle,
+                                                           const std::vector<double>& band_angle,
+                                                           double crease_angle,
+                                                           const std::vector<std::size_t>& candidates)
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef std::vector<K::Segment_3>::const_iterator Iterator;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Iterator> > > Tree;
-  const TriangleMesh& tm = idx.mesh();
-  std::vector<Eigen::Vector3d> points(idx.number_of_vertices());
-  for(std::size_t v = 0; v < points.size(); ++v)
-  {
-    const auto& p = get(vpm, idx.vertex_at(v));
-    points[v] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
-  std::vector<std::array<std::size_t, 2> > ends(idx.number_of_edges());
+  const std::vector<Eigen::Vector3d>& points = g.points;
   std::vector<K::Segment_3> band;
   auto point = [&](std::size_t v) { return K::Point_3(points[v].x(), points[v].y(), points[v].z()); };
-  for(std::size_t e = 0; e < ends.size(); ++e)
-  {
-    const auto h = halfedge(idx.edge_at(e), tm);
-    ends[e] = { idx.id(source(h, tm)), idx.id(target(h, tm)) };
+  for(std::size_t e = 0; e < g.ends.size(); ++e)
     if(is_crease_gap_band_edge(angle[e], band_angle[e], crease_angle))
-      band.emplace_back(point(ends[e][0]), point(ends[e][1]));
-  }
+      band.emplace_back(point(g.ends[e][0]), point(g.ends[e][1]));
   std::vector<std::size_t> near;
   if(band.empty()) return near;
-  const double r = crease_gap_ball_radius(points, ends) * (1 + 1e-6);
+  const double r = crease_gap_ball_radius(points, g.ends) * (1 + 1e-6);
   Tree tree(band.begin(), band.end());
   tree.accelerate_distance_queries();
   for(std::size_t e : candidates)
   {
-    const Eigen::Vector3d c = 0.5 * (points[ends[e][0]] + points[ends[e][1]]);
+    const Eigen::Vector3d c = 0.5 * (points[g.ends[e][0]] + points[g.ends[e][1]]);
     if(tree.squared_distance(K::Point_3(c.x(), c.y(), c.z())) < r * r) near.push_back(e);
   }
   return near;
@@ -562,10 +564,11 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
   for(std::size_t e = 0; e < is_crease.size(); ++e)
     if(is_crease[e]) candidates.push_back(e);
   const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
+  Edge_geometry geometry = edge_geometry(idx, vpm);
   const std::vector<std::size_t> searched =
-    candidates_near_band_edges(idx, vpm, angle, band_angle, crease_angle, candidates);
+    candidates_near_band_edges(geometry, angle, band_angle, crease_angle, candidates);
   const std::vector<Gap_lengths> lengths =
-    crease_gap_lengths(idx, vpm, angle, band_angle, crease_angle, searched, parallel);
+    crease_gap_lengths(idx, std::move(geometry), angle, band_angle, crease_angle, searched, parallel);
   for(std::size_t i = 0; i < searched.size(); ++i)
     if(lengths[i].band > crease_gap_ratio * lengths[i].crease) is_crease[searched[i]] = 0;
 }

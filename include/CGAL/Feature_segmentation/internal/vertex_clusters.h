@@ -6,6 +6,8 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_VERTEX_CLUSTERS_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_VERTEX_CLUSTERS_H
 
+#include <CGAL/Feature_segmentation/internal/breadth_first_clusters.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -30,20 +32,14 @@ struct Vertex_clusters
   void build(const std::vector<std::size_t>& adj_begin, const std::vector<std::size_t>& adj, std::size_t size)
   {
     const std::size_t nv = adj_begin.size() - 1;
-    const std::uint32_t none = std::uint32_t(-1);
-    cluster_of.assign(nv, none);
-    representative.clear();
-    std::vector<std::size_t> queue;
-    for(std::size_t seed = 0; seed < nv; ++seed)
     {
-      if(cluster_of[seed] != none) continue;
-      const std::uint32_t c = std::uint32_t(representative.size());
-      representative.push_back(seed);
-      cluster_of[seed] = c;
-      queue.assign(1, seed);
-      for(std::size_t j = 0; j < queue.size() && queue.size() < size; ++j)
-        for(std::size_t k = adj_begin[queue[j]]; k < adj_begin[queue[j] + 1] && queue.size() < size; ++k)
-          if(cluster_of[adj[k]] == none) { cluster_of[adj[k]] = c; queue.push_back(adj[k]); }
+      Breadth_first_clusters grown;
+      grown.grow(nv, size, [&](std::uint32_t x, const auto& visit) {
+        for(std::size_t k = adj_begin[x]; k < adj_begin[x + 1]; ++k) visit(std::uint32_t(adj[k]));
+      });
+      cluster_of.swap(grown.cluster_of);
+      representative.resize(grown.size());
+      for(std::size_t c = 0; c < grown.size(); ++c) representative[c] = grown.seed(c);
     }
     // the graph: the distinct clusters across the vertices' edges, in increasing order
     const std::size_t nc = representative.size();
