@@ -37,7 +37,7 @@ namespace Feature_segmentation {
 /// | `set_alpha()` (global refine/coarsen) | the weights of G', the clustering of G' | the weights of G' (C) + a solve on G' |
 /// | `add_to_alpha()`, `multiply_alpha()` (local) | the same, the clustering on the patches the region touches only | the region's edges + O(C) + a solve on those patches |
 /// | `merge_patches()` | the patches (a constraint that later solves keep) | O(N) |
-/// | `add_sketch()` | terms of the faces around the sketch, the oversegmentation inside the patches it touches, G', their clustering | O(F log F + E log E) + solve on those patches |
+/// | `add_sketch()` | terms of the faces around the sketch, the oversegmentation inside the patches it touches, G', their clustering | O(F_p log F_p) for the F_p faces of those patches + O(E + F + V + C log C) + solve on those patches |
 /// | `undo()`, `redo()` | nothing: moves along the history of states | O(1) |
 ///
 /// E, F are the mesh's edges and faces, N the nodes of G' (oversegments), C the mesh

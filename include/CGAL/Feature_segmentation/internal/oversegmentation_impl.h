@@ -42,12 +42,26 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   const std::size_t nf = idx.number_of_faces(), nv = idx.number_of_vertices();
   // dual graph: one dual edge per interior mesh edge, of length Similarity (anisotropic
   // distance) or Award (Euclidean, the geodesic variant of Mitani-Suzuki and Levy et al.)
-  std::vector<char> source(nf, 0), face_in(nf, 1);
+  std::vector<char> face_in(nf, 1);
   auto in_region = [&](std::size_t v) { return vertex_in_region == nullptr || (*vertex_in_region)[v] != 0; };
   if(vertex_in_region != nullptr)
     for(std::size_t f = 0; f < nf; ++f)
       for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
         if(!in_region(idx.id(target(h, tm)))) face_in[f] = 0;
+  // With a region, the graph's nodes are the region's faces only, in face order (a
+  // sketch's watershed costs its patches, not the mesh). The faces outside would be
+  // isolated nodes whose basins are dropped below, and the region's basin ids keep
+  // their order, so the oversegments are the same.
+  std::vector<Compact_index> node_of, face_of_node;
+  if(vertex_in_region != nullptr)
+  {
+    node_of.assign(nf, Compact_index(std::size_t(-1)));
+    for(std::size_t f = 0; f < nf; ++f)
+      if(face_in[f]) { node_of[f] = face_of_node.size(); face_of_node.push_back(f); }
+  }
+  const std::size_t nodes = vertex_in_region != nullptr ? face_of_node.size() : nf;
+  auto node = [&](std::size_t f) { return vertex_in_region != nullptr ? std::size_t(node_of[f]) : f; };
+  std::vector<char> source(nodes, 0);
   // (the edge list is freed once the graph is made)
   const Csr_graph g = [&]() {
     std::vector<std::pair<Compact_index, Compact_index> > dual;
@@ -62,22 +76,28 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
       if(f2 != Mesh_indexing<TriangleMesh>::npos && !face_in[f2]) f2 = Mesh_indexing<TriangleMesh>::npos;
       if(features.is_feature_edge[e])
       {
-        if(f1 != Mesh_indexing<TriangleMesh>::npos) source[f1] = 1;
-        if(f2 != Mesh_indexing<TriangleMesh>::npos) source[f2] = 1;
+        if(f1 != Mesh_indexing<TriangleMesh>::npos) source[node(f1)] = 1;
+        if(f2 != Mesh_indexing<TriangleMesh>::npos) source[node(f2)] = 1;
       }
       if(f1 == Mesh_indexing<TriangleMesh>::npos || f2 == Mesh_indexing<TriangleMesh>::npos) continue;
-      dual.emplace_back(f1, f2);
+      dual.emplace_back(node(f1), node(f2));
       len.push_back(anisotropic ? features.similarity[e] : features.award[e]);
     }
-    return Csr_graph::from_edges(nf, dual, len);
+    return Csr_graph::from_edges(nodes, dual, len);
   }();
   std::vector<double> height = multi_source_distances(g, source);
   for(double& h : height) h = -h; // basins lie far from the features
   Oversegmentation os;
   // face basins are only a step towards the vertex oversegments: not kept
   std::vector<long> face_basin = immersion_watershed(g, height);
-  for(std::size_t f = 0; f < nf; ++f)
-    if(!face_in[f]) face_basin[f] = watershed_label; // outside the region: not a basin face
+  if(vertex_in_region != nullptr)
+  {
+    // outside the region: not a basin face
+    std::vector<long> node_basin;
+    node_basin.swap(face_basin);
+    face_basin.assign(nf, watershed_label);
+    for(std::size_t i = 0; i < node_basin.size(); ++i) face_basin[face_of_node[i]] = node_basin[i];
+  }
 
   // 1. Majority basin of the basin faces around each vertex, ties to the smallest id.
   const std::size_t none = std::size_t(-1);
