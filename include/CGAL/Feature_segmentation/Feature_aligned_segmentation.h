@@ -40,15 +40,16 @@ namespace Feature_segmentation {
 /// | `add_sketch()` | terms of the faces around the sketch, the oversegmentation inside the patches it touches, G', their clustering | O(F_p log F_p) for the F_p faces of those patches + O(E + F + V + C log C) + solve on those patches |
 /// | `undo()`, `redo()` | nothing: moves along the history of states | O(1) |
 ///
-/// E, F are the mesh's edges and faces, N the nodes of G' (oversegments), C the mesh
-/// edges between two oversegments, whose weights sum to those of G'; G' is much smaller
-/// than the mesh (6,453 nodes and 18,374 edges on rockerarm remeshed to 196,566 faces,
-/// against 98,283 vertices and 294,849 edges). No edit but a sketch visits every vertex
-/// or every edge of the mesh: the patches are kept per oversegment (a vertex's patch is
-/// its oversegment's, read when asked: `patch()`, `vertex_patches()`, `face_patches()`),
-/// and the `alpha_e` of the feature edges follow alpha without being rewritten (a local
-/// edit writes those of its region only, copying the chunks of 4096 edges it writes
-/// into and the table of chunks, one pointer per 4096 edges).
+/// E, F, V are the mesh's edges, faces and vertices, N the nodes of G' (oversegments),
+/// C the mesh edges between two oversegments, whose weights sum to those of G'; G' is
+/// much smaller than the mesh (6,453 nodes and 18,374 edges on rockerarm remeshed to
+/// 196,566 faces, against 98,283 vertices and 294,849 edges). No edit but a sketch
+/// visits every vertex or every edge of the mesh: the patches are kept per oversegment
+/// (a vertex's patch is its oversegment's, read when asked: `patch()`,
+/// `vertex_patches()`, `face_patches()`), and the `alpha_e` of the feature edges follow
+/// alpha without being rewritten (a local edit writes those of its region only, copying
+/// the chunks of 4096 edges it writes into and the table of chunks, one pointer per
+/// 4096 edges).
 ///
 /// Each edit makes a new state that shares with the one before every part the edit leaves
 /// alone (a global alpha edit: everything but one patch id per oversegment; a local edit

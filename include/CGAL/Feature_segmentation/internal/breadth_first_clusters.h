@@ -8,7 +8,7 @@
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_BREADTH_FIRST_CLUSTERS_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_BREADTH_FIRST_CLUSTERS_H
 
-#include <CGAL/assertions.h>
+#include <CGAL/Feature_segmentation/internal/compact_index.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -31,10 +31,11 @@ struct Breadth_first_clusters
 
   // Clusters of up to `max_size` of the nodes 0 .. n-1; for_each_neighbour(x, f) calls
   // f(y) for every neighbour y of node x (`none` is skipped).
+  // \throws std::length_error if n does not fit 32 bits
   template <typename ForEachNeighbour>
   void grow(std::size_t n, std::size_t max_size, ForEachNeighbour for_each_neighbour)
   {
-    CGAL_precondition(n < std::size_t(none));
+    check_compact_index_range(n); // node ids are kept in 32 bits
     cluster_of.assign(n, none);
     order.clear();
     order.reserve(n);
