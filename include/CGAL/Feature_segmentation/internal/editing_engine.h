@@ -107,24 +107,15 @@ public:
     return edit([&](Edit_state& s) {
       const std::set<std::size_t> touched = patches_of(s, faces);
       if(touched.size() < 2) return false;
-      const std::vector<std::size_t>& old_patch = *s.segment_patch;
-      const std::vector<std::size_t>& old_group = *s.group;
-      std::vector<char> patch_in(s.number_of_patches, 0);
-      for(std::size_t t : touched) patch_in[t] = 1;
-      std::size_t target_group = std::size_t(-1);
-      std::vector<char> group_in(old_group.size(), 0);
-      for(std::size_t i = 0; i < old_patch.size(); ++i)
-        if(patch_in[old_patch[i]])
-        {
-          group_in[old_group[i]] = 1;
-          target_group = (std::min)(target_group, old_group[i]);
-        }
-      auto group = std::make_shared<std::vector<std::size_t> >(old_group);
+      // the touched patches' groups become the first of them
+      const std::vector<char> group_in = groups_in_patches(s, touched);
+      const std::size_t target_group = std::size_t(std::find(group_in.begin(), group_in.end(), 1) - group_in.begin());
+      auto group = std::make_shared<std::vector<std::size_t> >(*s.group);
       for(std::size_t& g : *group)
         if(group_in[g]) g = target_group;
-      auto patch = std::make_shared<std::vector<std::size_t> >(old_patch);
+      auto patch = std::make_shared<std::vector<std::size_t> >(*s.segment_patch);
       const std::size_t merged = *touched.begin();
-      for(std::size_t& l : *patch) if(patch_in[l]) l = merged;
+      for(std::size_t& l : *patch) if(touched.count(l)) l = merged;
       s.number_of_patches = normalize_patches(*s.reduction, *patch);
       s.group = group;
       s.segment_patch = patch;
@@ -322,24 +313,31 @@ private:
   // sketch, whose segments are new and have no patch yet).
   void solve_patches(Edit_state& s, const std::set<std::size_t>& touched, const std::vector<char>* vertex_region)
   {
+    if(vertex_region == nullptr)
+    {
+      const std::vector<char> in = groups_in_patches(s, touched);
+      solve(s, &in);
+      return;
+    }
     const std::vector<std::size_t>& group = *s.group;
-    const std::size_t ngroups = *std::max_element(group.begin(), group.end()) + 1;
-    std::vector<char> in(ngroups, 0);
-    if(vertex_region != nullptr)
-    {
-      const std::vector<std::size_t>& seg = s.reduction->os.vertex_segment;
-      for(std::size_t v = 0; v < seg.size(); ++v)
-        if((*vertex_region)[v]) in[group[seg[v]]] = 1;
-    }
-    else
-    {
-      std::vector<char> patch_in(s.number_of_patches, 0);
-      for(std::size_t t : touched) patch_in[t] = 1;
-      const std::vector<std::size_t>& patch = *s.segment_patch;
-      for(std::size_t i = 0; i < patch.size(); ++i)
-        if(patch_in[patch[i]]) in[group[i]] = 1;
-    }
+    std::vector<char> in(*std::max_element(group.begin(), group.end()) + 1, 0);
+    const std::vector<std::size_t>& seg = s.reduction->os.vertex_segment;
+    for(std::size_t v = 0; v < seg.size(); ++v)
+      if((*vertex_region)[v]) in[group[seg[v]]] = 1;
     solve(s, &in);
+  }
+
+  // Per merge group of state `s`: whether its oversegments are in the patches `touched`
+  // (a group lies in one patch).
+  static std::vector<char> groups_in_patches(const Edit_state& s, const std::set<std::size_t>& touched)
+  {
+    const std::vector<std::size_t>& group = *s.group;
+    const std::vector<std::size_t>& patch = *s.segment_patch;
+    std::vector<char> patch_in(s.number_of_patches, 0), in(*std::max_element(group.begin(), group.end()) + 1, 0);
+    for(std::size_t t : touched) patch_in[t] = 1;
+    for(std::size_t i = 0; i < patch.size(); ++i)
+      if(patch_in[patch[i]]) in[group[i]] = 1;
+    return in;
   }
 
   // Renumbers the patches of the oversegments 0, 1, ... in the order of their first
