@@ -9,6 +9,7 @@ packages=(
   libcgal-demo     # /usr/share/doc/libcgal-dev/data.tar.gz: fandisk and the other CAD meshes
   libboost-graph-dev libboost-test-dev libboost-program-options-dev   # options of the program
   libyaml-cpp-dev  # the ABC ground truth (benchmark/Feature_segmentation/evaluation)
+  zlib1g-dev       # the evaluation reads the gzipped ABC meshes of the data folder
   libeigen3-dev
   libtbb-dev       # threads (concurrency_tag, --threads)
   doxygen

@@ -32,8 +32,9 @@
 // then one row per CC variant (default, default with smoothing, best, best with
 // smoothing; smoothed tiles draw the smoothed curves), then the CGAL baselines).
 //
-// The CAD table (evaluation/cad_parts.h): the parts of DATA/cad against their B-rep
-// faces, and the ABC models after them, by the boundary F-score: this package at its
+// The CAD table (evaluation/cad_parts.h): the parts of DATA/cad and DATA/abc-dev (the
+// development set) against their B-rep faces, and the ABC models of DATA/abc after them,
+// by the boundary F-score: this package at its
 // defaults, the paper's pipeline, sharp edges at 20/45/60 degrees and VSA with the true
 // patch count, at the noise levels of --noise; OUT/cad_parts.md and OUT/cad_parts.csv.
 //
@@ -41,7 +42,8 @@
 // (13k to 828k faces), this package's patch counts and boundary F against the coarse
 // result; OUT/resolution.md and OUT/resolution.csv.
 //
-// Usage: evaluate_quality [--data DIR] [--out DIR] [--only NAME[,NAME...]] [--no-robustness]
+// Usage: evaluate_quality [--data DIR] [--out DIR] [--only NAME[,NAME...]] [--parts NAME[,NAME...]]
+//                         [--no-robustness]
 //                         [--noise X,Y,...] [--alpha A] [--strength-threshold S]
 //                         [--crease-filter N] [--no-tangent] [--crest-lines | --no-crest-lines]
 //   DIR (default $FEATURE_SEGMENTATION_DATA): holds paper-models/, abc/ (ground truth)
@@ -88,6 +90,7 @@ struct Options
   // what --only names: models of the quality table, "cad" (the CAD table), "resolution"
   // (fandisk's resolution series); empty: everything
   std::set<std::string> only;
+  std::set<std::string> parts; // --parts: the parts of the CAD table to evaluate; empty: all
   bool robustness = true;
   Cad_options cad_options;
 
@@ -339,19 +342,21 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
 {
   namespace po = boost::program_options;
   Cad_options& cad = opt.cad_options;
-  std::string only, noise;
+  std::string only, noise, parts;
   for(double sigma : cad.noise) noise += (noise.empty() ? "" : ",") + plain(sigma);
   bool no_robustness = false, no_tangent = false, crest_lines = false, no_crest_lines = false;
   po::options_description options("Usage: evaluate_quality [options]  (a negative number as --alpha=-0.5)\nOptions");
   options.add_options()
     ("help", "this text")
     ("data", po::value(&opt.data)->value_name("DIR"),
-     "folder of paper-models/, abc/ and cad/ (default: $FEATURE_SEGMENTATION_DATA; without it, fandisk only and "
+     "folder of paper-models/, abc/, cad/ and abc-dev/ (default: $FEATURE_SEGMENTATION_DATA; without it, fandisk only and "
      "no CAD table)")
     ("out", po::value(&opt.out)->value_name("DIR")->default_value(opt.out), "output folder")
     ("only", po::value(&only)->value_name("NAME[,NAME...]"),
      "only these: models of the quality table (fandisk, abc_00000006, bunny, ...), cad (the CAD table), "
      "resolution (fandisk's resolution series); default: everything")
+    ("parts", po::value(&parts)->value_name("NAME[,NAME...]"),
+     "CAD table: only these parts (file names without extension, e.g. 24051_4852a192_5,abc_00000026)")
     ("no-robustness", po::bool_switch(&no_robustness), "quality table: without the noise columns")
     ("noise", po::value(&noise)->value_name("X,Y,...")->default_value(noise),
      "CAD table: the noise levels, standard deviations as fractions of the diagonal")
@@ -401,6 +406,7 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
     if(cad.noise.empty()) throw po::error("--noise takes at least one level");
     if(crest_lines && no_crest_lines) throw po::error("--crest-lines and --no-crest-lines exclude each other");
     for(const std::string& name : split_commas(only)) opt.only.insert(name);
+    for(const std::string& name : split_commas(parts)) opt.parts.insert(name);
   }
   catch(const po::error& e)
   {
@@ -482,7 +488,7 @@ int main(int argc, char** argv)
   }
   const std::string machine = machine_description();
   const bool quality_evaluated = !opt.quality_table() || run_quality_table(opt, machine);
-  if(opt.selected("cad")) run_cad_table(opt.data, opt.out, opt.cad_options, machine);
+  if(opt.selected("cad")) run_cad_table(opt.data, opt.out, opt.cad_options, machine, opt.parts);
   if(opt.selected("resolution"))
     run_resolution_series(std::string(FS_MESH_DIR) + "/fandisk.off", opt.out, opt.cad_options, machine);
   return quality_evaluated ? 0 : 1;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading and validation of the input mesh of the package's programs. A mesh file is
 // read as a polygon soup by the readers of `mesh_io/` (OFF, OBJ, PLY, STL), checked for what the
-// pipeline cannot process (non-finite coordinates, degenerate or folded faces,
-// non-manifold edges), repaired where a repair is harmless (duplicate points and faces,
-// pinched vertices, inconsistent orientation, quads and polygons), and turned into a
+// pipeline cannot process (non-finite coordinates, degenerate or folded faces),
+// repaired where a repair is harmless (duplicate points and faces, pinched vertices,
+// edges of more than two faces, inconsistent orientation, quads and polygons), and turned into a
 // triangle mesh. Every failure is an `Input_error` whose message is one line naming the
 // cause, so that a program prints it and exits instead of crashing further down; every
 // repair is reported as a notice line. The repairs keep track of where each point and
@@ -43,6 +43,7 @@ struct Read_report
   std::size_t number_of_merged_points = 0;   ///< duplicate or unused points removed
   std::size_t number_of_removed_faces = 0;   ///< duplicate faces removed
   std::size_t number_of_duplicated_points = 0; ///< points split to make pinched vertices manifold
+  std::size_t number_of_non_manifold_edges = 0; ///< edges of more than two faces, whose faces were separated
   std::size_t number_of_triangulated_faces = 0; ///< quads and polygons split into triangles
   std::size_t number_of_border_edges = 0;    ///< border edges of the final mesh
   std::vector<std::string> notices;          ///< one line per repair, without prefix
@@ -228,8 +229,9 @@ Vertex_corners merge_duplicates(const std::string& path, Mesh_soup& soup, std::v
   return Vertex_corners(soup, points.size());
 }
 
-// The slow path, for a soup whose faces must be reoriented or whose vertices must be
-// split: CGAL's orient_polygon_soup, then Euler::add_face one face at a time. Point i
+// The slow path, for a soup whose faces must be reoriented, whose vertices must be split
+// or whose edges have more than two faces: CGAL's orient_polygon_soup (which cuts the
+// soup along an edge of more than two faces), then Euler::add_face one face at a time. Point i
 // becomes the i-th vertex and polygon p the p-th face; orient_polygon_soup appends the
 // copies of split points, so the originals stay first. Returns the number of points
 // that were duplicated.
@@ -353,7 +355,12 @@ Read_report mesh_from_soup(const std::string& path, Mesh_soup& soup, Mesh& mesh,
   {
     report.number_of_duplicated_points =
       internal::orient_and_build(path, soup, points, mesh, vertex_of_point, face_of_polygon);
-    if(report.number_of_duplicated_points > 0)
+    report.number_of_non_manifold_edges = topology.number_of_non_manifold_edges;
+    if(topology.number_of_non_manifold_edges > 0)
+      report.notices.push_back("separated the faces of " + std::to_string(topology.number_of_non_manifold_edges) +
+                               " non-manifold edges (shared by more than two faces), duplicating " +
+                               std::to_string(report.number_of_duplicated_points) + " vertices");
+    else if(report.number_of_duplicated_points > 0)
       report.notices.push_back("duplicated " + std::to_string(report.number_of_duplicated_points) +
                                " non-manifold or non-orientable vertices");
     else

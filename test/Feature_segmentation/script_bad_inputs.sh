@@ -186,12 +186,10 @@ case_ stl_inf_ascii       "$bad/inf_ascii.stl"           ":6: has a NaN or infin
 case_ stl_truncated_ascii "$bad/truncated_ascii.stl"     "expected 'vertex' or 'endloop', found the end of the file"
 
 # ---- a well-formed file that is not a surface ----------------------------------------
-p 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' > "$bad/non_manifold_edge.off"
 p 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0.5 2 0\n3 0 1 2\n3 1 0 3\n' > "$bad/folded.off"
 p 'OFF\n4 2 0\n0 0 0\n1 1 1\n2 2 2\n0 0 1\n3 0 1 2\n3 0 2 3\n' > "$bad/collinear.off"
 p 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n' > "$bad/repeated_index.off"
 p 'OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n4 0 1 2 3\n' > "$bad/same_position.off"
-case_ non_manifold_edge   "$bad/non_manifold_edge.off"   'the edge between vertices 0 and 1 is shared by 3 faces \(non-manifold edge\)'
 case_ folded              "$bad/folded.off"              'face 0 \(line 7\) and face 1 \(line 8\) overlap'
 case_ collinear           "$bad/collinear.off"           'face 0 \(line 7\) is degenerate \(its points are collinear: zero area\)'
 case_ repeated_index      "$bad/repeated_index.off"      'face 0 \(line 6\) is degenerate \(it uses a vertex twice\)'

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every file variant the readers accept, read by the program: OFF (OFF, COFF, 4OFF,
-# comments, quads, duplicates, an open surface), OBJ (v/t/n, v//n with the ABC dataset's
+# comments, quads, duplicates, an open surface, an edge of four faces), OBJ (v/t/n, v//n with the ABC dataset's
 # `vc` lines, negative indices, `v` with a weight, skipped statements), PLY (ascii; binary
 # little and big endian with double coordinates, extra properties and an extra element
 # with a list), STL (ascii, binary, binary whose header starts with "solid"). The files
@@ -49,6 +49,8 @@ variant fuzz_read_off/tetrahedron_coff.off        4 4 0
 variant fuzz_read_off/four_d.off                  4 4 0
 variant fuzz_read_off/open_box.off                8 10 4
 variant fuzz_read_off/duplicates.off              8 12 0 'removed 1 duplicate faces'
+# two tetrahedra sharing an edge (four faces on it): separated into two closed tetrahedra
+variant fuzz_read_off/non_manifold_edge.off       8 8 0 'separated the faces of 1 non-manifold edges'
 variant fuzz_read_obj/cube.obj                    8 12 0 'triangulated 6 faces'
 variant fuzz_read_obj/abc_style.obj               4 4 0
 variant fuzz_read_obj/negative.obj                4 4 0

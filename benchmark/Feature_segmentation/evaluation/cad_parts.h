@@ -38,7 +38,13 @@
 #include "methods.h"
 #include "report.h"
 
+#include "read_input_mesh.h" // the program's reader: the parts are read as a user's files are
+
+#include <unistd.h> // getpid: a temporary file per process
+#include <zlib.h>
+
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
 #include <algorithm>
@@ -49,6 +55,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -94,21 +101,91 @@ struct Cad_part
   std::vector<int> labels;
 };
 
-/// Reads NAME.obj with NAME.labels (one label per face, in the OBJ's order) or, with
-/// `abc`, with NAME.yml (ABC format, abc_ground_truth.h; the name gets "abc_" before it).
-/// Returns false with `error` set when the mesh or its labels cannot be read, or when
-/// a face has no label.
-inline bool read_cad_part(const std::filesystem::path& obj, bool abc, Cad_part& part, std::string& error)
+/// The kinds of ground-truth files: NAME.obj with NAME.labels (DATA/cad), NAME.obj.gz
+/// with NAME.labels (DATA/abc-dev: native ABC meshes, gzipped), NAME.obj with NAME.yml
+/// (DATA/abc: the ABC feature format).
+enum class Part_format { OBJ_LABELS, GZIPPED_OBJ_LABELS, ABC_YML };
+
+/// The set a part belongs to, named as in the tables.
+inline std::string part_set(Part_format format)
 {
-  if(!read_mesh_in_file_order(obj.string(), part.mesh, error)) return false;
-  part.name = (abc ? "abc_" : "") + obj.stem().string();
-  const std::size_t faces = part.mesh.number_of_faces();
-  if(abc)
+  switch(format)
   {
+    case Part_format::OBJ_LABELS: return "cad";
+    case Part_format::GZIPPED_OBJ_LABELS: return "abc-dev";
+    default: return "abc";
+  }
+}
+
+/// Unpacks the gzip file `gz` into the file `out`. Returns false with `error` set on failure.
+inline bool gunzip_file(const std::filesystem::path& gz, const std::filesystem::path& out, std::string& error)
+{
+  gzFile in = gzopen(gz.string().c_str(), "rb");
+  if(in == nullptr)
+  {
+    error = "cannot open " + gz.string();
+    return false;
+  }
+  std::ofstream file(out, std::ios::binary);
+  std::vector<char> buffer(1 << 16);
+  int n = 0;
+  while((n = gzread(in, buffer.data(), static_cast<unsigned>(buffer.size()))) > 0)
+    file.write(buffer.data(), n);
+  int code = Z_OK;
+  const char* message = gzerror(in, &code);
+  gzclose(in);
+  if(n < 0 || code != Z_OK || !file)
+  {
+    error = "cannot unpack " + gz.string() + (n < 0 ? std::string(": ") + message : std::string());
+    return false;
+  }
+  return true;
+}
+
+/// The file's labels, one per face of the file, put on the mesh faces the program's
+/// reader made of them (a duplicate face of the file keeps its first occurrence's face).
+inline bool read_labels_of_file_faces(const std::filesystem::path& path,
+                                      const fs_demo::Input_correspondence<Mesh>& correspondence,
+                                      std::size_t number_of_faces, std::vector<int>& labels, std::string& error)
+{
+  std::ifstream in(path);
+  std::vector<int> file_labels;
+  int label;
+  while(in >> label) file_labels.push_back(label);
+  if(file_labels.size() != correspondence.face_of_file_face.size())
+  {
+    error = path.string() + ": " + std::to_string(file_labels.size()) + " labels for " +
+            std::to_string(correspondence.face_of_file_face.size()) + " faces";
+    return false;
+  }
+  labels.assign(number_of_faces, -1);
+  std::vector<face_descriptor> mesh_faces;
+  for(std::size_t f = file_labels.size(); f-- > 0;) // the first occurrence wins
+  {
+    mesh_faces.clear();
+    correspondence.mesh_faces_of_file_face(f, mesh_faces);
+    for(face_descriptor m : mesh_faces) labels[m.idx()] = file_labels[f];
+  }
+  return true;
+}
+
+/// Reads a part (Part_format): a NAME.obj or NAME.obj.gz (unpacked into a temporary file)
+/// with the program's reader, which repairs as it does for a user (duplicates, edges of
+/// more than two faces), and NAME.labels; or NAME.obj with NAME.yml (the name gets "abc_"
+/// before it). Returns false with `error` set when the mesh or its labels cannot be read,
+/// or when a face has no label.
+inline bool read_cad_part(const std::filesystem::path& path, Part_format format, Cad_part& part, std::string& error)
+{
+  namespace fsys = std::filesystem;
+  if(format == Part_format::ABC_YML)
+  {
+    if(!read_mesh_in_file_order(path.string(), part.mesh, error)) return false;
+    part.name = "abc_" + path.stem().string();
     try
     {
-      part.labels = read_abc_ground_truth(std::filesystem::path(obj).replace_extension(".yml").string(),
-                                          part.mesh.number_of_vertices(), faces).face_patch;
+      part.labels = read_abc_ground_truth(fsys::path(path).replace_extension(".yml").string(),
+                                          part.mesh.number_of_vertices(), part.mesh.number_of_faces())
+                      .face_patch;
     }
     catch(const std::exception& e)
     {
@@ -118,10 +195,40 @@ inline bool read_cad_part(const std::filesystem::path& obj, bool abc, Cad_part& 
   }
   else
   {
-    std::ifstream in(std::filesystem::path(obj).replace_extension(".labels"));
-    int label;
-    while(in >> label) part.labels.push_back(label);
+    fsys::path obj = path, stem = fsys::path(path).replace_extension(); // NAME.obj.gz -> NAME.obj
+    if(format == Part_format::GZIPPED_OBJ_LABELS)
+    {
+      std::error_code ec;
+      obj = fsys::temp_directory_path(ec) / ("fs_evaluation_" + std::to_string(::getpid()) + "_" +
+                                             stem.filename().string());
+      if(!gunzip_file(path, obj, error)) return false;
+    }
+    stem.replace_extension();
+    part.name = stem.filename().string();
+    fs_demo::Input_correspondence<Mesh> correspondence;
+    bool ok = true;
+    try
+    {
+      const fs_demo::Read_report report = fs_demo::read_input_mesh(obj.string(), part.mesh, correspondence);
+      for(const std::string& notice : report.notices)
+        std::cerr << "evaluate_quality: " << part.name << ": " << notice << std::endl;
+    }
+    catch(const std::exception& e)
+    {
+      error = e.what();
+      ok = false;
+    }
+    if(format == Part_format::GZIPPED_OBJ_LABELS)
+    {
+      std::error_code ec;
+      fsys::remove(obj, ec);
+    }
+    if(!ok) return false;
+    if(!read_labels_of_file_faces(fsys::path(stem).replace_extension(".labels"), correspondence,
+                                  part.mesh.number_of_faces(), part.labels, error))
+      return false;
   }
+  const std::size_t faces = part.mesh.number_of_faces();
   if(part.labels.size() != faces || *std::min_element(part.labels.begin(), part.labels.end()) < 0)
   {
     error = "not one label >= 0 per face (" + std::to_string(part.labels.size()) + " labels, " +
@@ -182,9 +289,30 @@ inline Segmentation run_package(const Mesh& mesh, const Cad_options& options, bo
 struct Cad_score
 {
   std::size_t patches = 0;
+  std::size_t small_patches = 0; ///< patches under 0.1% of the area (small_patch_share)
   FS::Boundary_scores boundary;
   double seconds = 0;
 };
+
+/// The area share under which a patch counts as small in the tables (confetti).
+constexpr double small_patch_share = 0.001;
+
+/// The number of patches of `face_patch` whose area is below `share` of the whole area.
+inline std::size_t number_of_small_patches(const Mesh& mesh, const std::vector<std::size_t>& face_patch,
+                                           double share = small_patch_share)
+{
+  std::map<std::size_t, double> area;
+  double total = 0;
+  for(auto f : faces(mesh))
+  {
+    const double a = PMP::face_area(f, mesh);
+    area[face_patch[f.idx()]] += a;
+    total += a;
+  }
+  std::size_t n = 0;
+  for(const auto& pa : area) n += pa.second < share * total ? 1 : 0;
+  return n;
+}
 
 /// The columns of the CAD table, in the order of run_cad_methods(): (CSV name, header).
 inline const std::vector<std::pair<std::string, std::string> >& cad_methods()
@@ -214,6 +342,7 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
       [&s](face_descriptor f) { return s.face_patch[f.idx()]; });
     Cad_score r;
     r.patches = number_of_distinct(s.face_patch);
+    r.small_patches = number_of_small_patches(mesh, s.face_patch);
     r.boundary = FS::compare_boundaries(mesh, patches, truth, FS::default_boundary_tolerance(mesh));
     r.seconds = s.seconds;
     scores.push_back(r);
@@ -225,20 +354,20 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
 struct Cad_result
 {
   std::string name;
-  bool in_mean = true; ///< a CAD part; the ABC models follow the mean
+  std::string set; ///< part_set(): "cad" and "abc-dev" make the development set, "abc" follows it
   std::size_t faces = 0, true_patches = 0;
   double tangent_share = 0;
   std::vector<std::vector<Cad_score> > scores; ///< [noise level][method]
 };
 
 /// Reads a part (read_cad_part()) and runs the methods at every noise level.
-inline bool evaluate_cad_part(const std::filesystem::path& obj, bool abc, const Cad_options& options,
+inline bool evaluate_cad_part(const std::filesystem::path& path, Part_format format, const Cad_options& options,
                               Cad_result& result, std::string& error)
 {
   Cad_part part;
-  if(!read_cad_part(obj, abc, part, error)) return false;
+  if(!read_cad_part(path, format, part, error)) return false;
   result.name = part.name;
-  result.in_mean = !abc;
+  result.set = part_set(format);
   result.faces = part.mesh.number_of_faces();
   result.true_patches = number_of_distinct(part.labels);
   result.tangent_share = tangent_continuous_share(part.mesh, part.labels);
@@ -262,118 +391,158 @@ inline void write_and_print(const std::filesystem::path& path, const std::string
   else std::cerr << "evaluate_quality: cannot write " << path.string() << std::endl;
 }
 
+/// The groups whose means the tables give: (name, sets in it).
+inline const std::vector<std::pair<std::string, std::vector<std::string> > >& cad_groups()
+{
+  static const std::vector<std::pair<std::string, std::vector<std::string> > > groups = {
+    {"development (cad + abc-dev)", {"cad", "abc-dev"}}, {"cad", {"cad"}}, {"abc-dev", {"abc-dev"}}};
+  return groups;
+}
+
+/// The mean boundary F of each method at noise level `l` over the parts of `sets`, and
+/// the number of those parts.
+inline std::pair<std::vector<double>, std::size_t> mean_f(const std::vector<Cad_result>& results,
+                                                          const std::vector<std::string>& sets, std::size_t l)
+{
+  std::vector<double> mean(cad_methods().size(), 0.);
+  std::size_t parts = 0;
+  for(const Cad_result& r : results)
+    if(std::find(sets.begin(), sets.end(), r.set) != sets.end())
+    {
+      ++parts;
+      for(std::size_t k = 0; k < mean.size(); ++k) mean[k] += r.scores[l][k].boundary.f_score;
+    }
+  for(double& x : mean) x = parts > 0 ? x / double(parts) : 0.;
+  return {mean, parts};
+}
+
 /// Writes OUT/cad_parts.md and OUT/cad_parts.csv, and prints the markdown.
 inline void write_cad_tables(const std::string& out, const Cad_options& options, const std::vector<Cad_result>& results,
                              const std::string& machine)
 {
   const auto& methods = cad_methods();
   const std::size_t levels = options.noise.size();
-  std::vector<std::vector<double> > mean(levels, std::vector<double>(methods.size(), 0.)); // [level][method]
-  std::size_t parts = 0;
-  for(const Cad_result& r : results)
-    if(r.in_mean)
-    {
-      ++parts;
-      for(std::size_t l = 0; l < levels; ++l)
-        for(std::size_t k = 0; k < methods.size(); ++k) mean[l][k] += r.scores[l][k].boundary.f_score;
-    }
-  for(auto& row : mean)
-    for(double& x : row) x = parts > 0 ? x / double(parts) : 0.;
 
   Text_table csv;
-  csv.header = {"part", "faces", "true_patches", "tangent_share", "noise", "method",
-                "patches", "precision", "recall", "f", "seconds"};
+  csv.header = {"set", "part", "faces", "true_patches", "tangent_share", "noise", "method",
+                "patches", "small_patches", "precision", "recall", "f", "seconds"};
   for(const Cad_result& r : results)
     for(std::size_t l = 0; l < levels; ++l)
       for(std::size_t k = 0; k < methods.size(); ++k)
       {
         const Cad_score& s = r.scores[l][k];
-        csv.rows.push_back({r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share, 6),
-                            plain(options.noise[l]), methods[k].first, std::to_string(s.patches),
-                            fmt(s.boundary.precision, 6), fmt(s.boundary.recall, 6), fmt(s.boundary.f_score, 6),
-                            fmt(s.seconds, 3)});
+        csv.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches),
+                            fmt(r.tangent_share, 6), plain(options.noise[l]), methods[k].first,
+                            std::to_string(s.patches), std::to_string(s.small_patches), fmt(s.boundary.precision, 6),
+                            fmt(s.boundary.recall, 6), fmt(s.boundary.f_score, 6), fmt(s.seconds, 3)});
       }
-  for(std::size_t l = 0; parts > 0 && l < levels; ++l)
-    for(std::size_t k = 0; k < methods.size(); ++k)
-      csv.rows.push_back({"mean_cad_parts", "", "", "", plain(options.noise[l]), methods[k].first, "", "", "",
-                          fmt(mean[l][k], 6), ""});
+  for(const auto& group : cad_groups())
+    for(std::size_t l = 0; l < levels; ++l)
+    {
+      const auto m = mean_f(results, group.second, l);
+      if(m.second == 0) continue;
+      for(std::size_t k = 0; k < methods.size(); ++k)
+        csv.rows.push_back({"mean " + group.first, "", "", "", "", plain(options.noise[l]), methods[k].first, "", "",
+                            "", "", fmt(m.first[k], 6), ""});
+    }
   std::ofstream csv_file(std::filesystem::path(out) / "cad_parts.csv");
   csv.write_csv(csv_file);
 
   std::ostringstream md;
   md << "# CAD parts\n\nMachine: " << machine << ". Produced by `evaluate_quality` (evaluation/cad_parts.h). "
      << "Boundary F-score at 1% of the bounding-box diagonal against the true patches (the B-rep faces; the ABC "
-        "surfaces), on the face patches, the patch count in parentheses. \"this package (defaults)\": "
-        "segment_along_features() with "
+        "surfaces), on the face patches, the patch count in parentheses and, after a slash, the number of patches "
+        "under 0.1% of the area. Sets: \"cad\", Fusion 360 parts meshed by gmsh; \"abc-dev\", native ABC meshes "
+        "(read by the program's reader, which separates the faces of non-manifold edges); \"abc\", the ABC models "
+        "with a YAML ground truth, outside the means. \"this package (defaults)\": segment_along_features() with "
      << settings_text(options)
      << "; \"paper's pipeline\": crease_angle 180 (crest lines only), neighborhood_radius 0, alpha 0.6; \"sharp "
         "edges N\": CGAL's sharp_edges_segmentation at N degrees; \"VSA (true count)\": CGAL's variational shape "
         "approximation with the true patch count (L21, hierarchical seeding, seeded). \"tang.\": the share of the "
         "true boundary length whose dihedral angle is below 20 degrees (tangent-continuous), on the clean mesh. "
-        "Noise: every vertex moved along its normal by a normal deviate of the given standard deviation (seed 1). "
-        "The ABC models follow the mean of the CAD parts, outside it.\n\n## Mean boundary F over the "
-     << parts << " CAD parts\n\n";
-  Text_table means;
-  means.header = {"noise (of the diagonal)"};
-  for(const auto& m : methods) means.header.push_back(m.second);
-  for(std::size_t l = 0; l < levels; ++l)
+        "Noise: every vertex moved along its normal by a normal deviate of the given standard deviation (seed 1).\n";
+  for(const auto& group : cad_groups())
   {
-    means.rows.push_back({plain(100 * options.noise[l]) + "%"});
-    for(double f : mean[l]) means.rows.back().push_back(fmt(f));
+    if(mean_f(results, group.second, 0).second == 0) continue;
+    md << "\n## Mean boundary F: " << group.first << ", " << mean_f(results, group.second, 0).second
+       << " parts\n\n";
+    Text_table means;
+    means.header = {"noise (of the diagonal)"};
+    for(const auto& m : methods) means.header.push_back(m.second);
+    for(std::size_t l = 0; l < levels; ++l)
+    {
+      means.rows.push_back({plain(100 * options.noise[l]) + "%"});
+      for(double f : mean_f(results, group.second, l).first) means.rows.back().push_back(fmt(f));
+    }
+    means.write_markdown(md);
   }
-  means.write_markdown(md);
   for(std::size_t l = 0; l < levels; ++l)
   {
     md << "\n## Noise " << plain(100 * options.noise[l]) << "% of the diagonal\n\n";
     Text_table t;
-    t.header = {"part", "faces", "true patches", "tang."};
+    t.header = {"set", "part", "faces", "true patches", "tang."};
     for(const auto& m : methods) t.header.push_back(m.second);
-    const std::vector<std::string> mean_row = [&]() {
-      std::vector<std::string> row = {"mean (" + std::to_string(parts) + " CAD parts)", "", "", ""};
-      for(double f : mean[l]) row.push_back("**" + fmt(f) + "**");
-      return row;
-    }();
-    bool mean_written = parts == 0;
     for(const Cad_result& r : results)
     {
-      if(!r.in_mean && !mean_written) t.rows.push_back(mean_row);
-      mean_written = mean_written || !r.in_mean;
-      t.rows.push_back({r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share)});
+      t.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share)});
       for(const Cad_score& s : r.scores[l])
-        t.rows.back().push_back(fmt(s.boundary.f_score) + " (" + std::to_string(s.patches) + ")");
+        t.rows.back().push_back(fmt(s.boundary.f_score) + " (" + std::to_string(s.patches) + "/" +
+                                std::to_string(s.small_patches) + ")");
     }
-    if(!mean_written) t.rows.push_back(mean_row);
+    for(const auto& group : cad_groups())
+    {
+      const auto m = mean_f(results, group.second, l);
+      if(m.second == 0) continue;
+      t.rows.push_back({"", "mean " + group.first + " (" + std::to_string(m.second) + ")", "", "", ""});
+      for(double f : m.first) t.rows.back().push_back("**" + fmt(f) + "**");
+    }
     t.write_markdown(md);
   }
   write_and_print(std::filesystem::path(out) / "cad_parts.md", md.str());
 }
 
-/// The CAD table: evaluates the parts of DATA/cad, then the ABC models of DATA/abc, at
-/// every noise level of `options`; writes OUT/cad_parts.md and OUT/cad_parts.csv and
-/// prints the markdown. Without DATA/cad, says so on the standard output and returns
-/// false (nothing written).
+/// The CAD table: evaluates the parts of DATA/cad (NAME.obj), DATA/abc-dev (NAME.obj.gz)
+/// and DATA/abc (NAME.obj with NAME.yml), each with its ground truth, at every noise
+/// level of `options`; `only_parts`, if not empty, keeps the parts named in it. Writes
+/// OUT/cad_parts.md and OUT/cad_parts.csv and prints the markdown. Without DATA/cad and
+/// DATA/abc-dev, says so on the standard output and returns false (nothing written).
 inline bool run_cad_table(const std::string& data, const std::string& out, const Cad_options& options,
-                          const std::string& machine)
+                          const std::string& machine, const std::set<std::string>& only_parts = {})
 {
   namespace fsys = std::filesystem;
-  const fsys::path folder = fsys::path(data) / "cad";
   std::error_code ec;
-  if(data.empty() || !fsys::is_directory(folder, ec))
+  const fsys::path cad = fsys::path(data) / "cad", abc_dev = fsys::path(data) / "abc-dev";
+  if(data.empty() || (!fsys::is_directory(cad, ec) && !fsys::is_directory(abc_dev, ec)))
   {
     std::cout << "evaluate_quality: no CAD parts ("
               << (data.empty() ? "no data folder: set FEATURE_SEGMENTATION_DATA or --data"
-                               : folder.string() + " absent")
+                               : cad.string() + " and " + abc_dev.string() + " absent")
               << "): CAD table skipped" << std::endl;
     return false;
   }
-  std::vector<std::pair<fsys::path, bool> > inputs; // (OBJ, in the ABC format)
-  for(const auto& e : fsys::directory_iterator(folder, ec))
-    if(e.path().extension() == ".obj") inputs.emplace_back(e.path(), false);
-  std::sort(inputs.begin(), inputs.end());
-  for(const fsys::path& p : ground_truth_models(fsys::path(data) / "abc")) inputs.emplace_back(p, true);
+  const auto files = [&ec](const fsys::path& folder, const std::string& ending) {
+    std::vector<fsys::path> result;
+    if(fsys::is_directory(folder, ec))
+      for(const auto& e : fsys::directory_iterator(folder, ec))
+      {
+        const std::string name = e.path().filename().string();
+        if(name.size() > ending.size() && name.compare(name.size() - ending.size(), ending.size(), ending) == 0)
+          result.push_back(e.path());
+      }
+    std::sort(result.begin(), result.end());
+    return result;
+  };
+  std::vector<std::pair<fsys::path, Part_format> > inputs;
+  for(const fsys::path& p : files(cad, ".obj")) inputs.emplace_back(p, Part_format::OBJ_LABELS);
+  for(const fsys::path& p : files(abc_dev, ".obj.gz")) inputs.emplace_back(p, Part_format::GZIPPED_OBJ_LABELS);
+  for(const fsys::path& p : ground_truth_models(fsys::path(data) / "abc")) inputs.emplace_back(p, Part_format::ABC_YML);
   std::vector<Cad_result> results;
   for(const auto& input : inputs)
   {
+    std::string stem = input.first.filename().string();
+    stem = stem.substr(0, stem.find('.'));
+    if(input.second == Part_format::ABC_YML) stem = "abc_" + stem;
+    if(!only_parts.empty() && only_parts.count(stem) == 0) continue;
     Cad_result r;
     std::string error;
     bool ok = false;

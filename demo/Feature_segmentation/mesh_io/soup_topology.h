@@ -162,10 +162,15 @@ struct Soup_topology
   std::vector<std::uint32_t> twin;
   bool is_consistently_oriented = true; ///< no edge is run the same way by two faces
   bool has_manifold_vertices = true;    ///< every vertex has one fan of faces
+  /// Edges shared by more than two faces (each counted once). The soup is then left to
+  /// CGAL's `orient_polygon_soup`, which treats such an edge as a border of each of its
+  /// faces and duplicates its vertices, so that the faces come apart along it.
+  std::size_t number_of_non_manifold_edges = 0;
 };
 
-/// Finds each edge's faces. Throws `Input_error` for an edge with more than two faces
-/// and for two faces folded onto each other (coplanar, on the same side of their edge).
+/// Finds each edge's faces and counts the edges with more than two faces (a repair: see
+/// `Soup_topology`). Throws `Input_error` for two faces folded onto each other (coplanar,
+/// on the same side of their edge).
 template <typename Point>
 Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
                             const std::vector<Point>& points, const Vertex_corners& vc)
@@ -210,9 +215,23 @@ Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
       }
     }
     if(faces > 2)
-      throw Input_error(path + ": the edge between vertices " + std::to_string((std::min)(a, b)) +
-                        " and " + std::to_string((std::max)(a, b)) + " is shared by " +
-                        std::to_string(faces) + " faces (non-manifold edge)");
+    {
+      // counted at the corner of its smallest face, so once per edge
+      bool first = true;
+      for(std::uint32_t k = vc.begin[a]; first && k < vc.begin[a + 1]; ++k)
+      {
+        const std::uint32_t d = vc.corners[k], n = soup.indices[next_corner(soup, vc, d)];
+        first = !(n == b && vc.face_of[d] < vc.face_of[c]);
+      }
+      for(std::uint32_t k = vc.begin[b]; first && k < vc.begin[b + 1]; ++k)
+      {
+        const std::uint32_t d = vc.corners[k], n = soup.indices[next_corner(soup, vc, d)];
+        first = !(n == a && vc.face_of[d] < vc.face_of[c]);
+      }
+      if(first) ++topology.number_of_non_manifold_edges;
+      topology.is_consistently_oriented = false; // no twins: CGAL's orientation builds the mesh
+      continue;
+    }
     if(faces < 2)
       continue;
     if(same_direction)
