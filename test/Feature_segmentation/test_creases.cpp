@@ -21,6 +21,8 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -118,6 +120,71 @@ void slotted_plate_is_its_ten_faces(int refine)
   std::map<typename boost::graph_traits<Mesh>::face_descriptor, std::size_t> patch;
   seg.face_patches(b, boost::make_assoc_property_map(patch));
   BOOST_TEST(patches_are_sides(m, [&](auto f) { return patch.at(f); }, side, 10));
+}
+
+// The unit cube with its corner (1,1,1) cut off by the plane 2x + y + z = 3.8: one
+// triangle, A = (0.9,1,1), B = (1,0.8,1), C = (1,1,0.8), the pentagons fanned into
+// triangles. `side[f]`: 0..5 for x=0, x=1, y=0, y=1, z=0, z=1, and 6 for the triangle.
+// The triangle's normal (2,1,1)/sqrt(6) bends by 35.3 degrees from the side x=1 and by
+// 65.9 from y=1 and z=1: three creases around one face.
+fs_test::Soup cube_with_a_cut_corner(std::vector<int>& side)
+{
+  typedef std::array<double, 3> P;
+  const std::vector<std::pair<std::vector<P>, P> > polygons = { // the polygon, its outward normal
+    {{{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}, {-1, 0, 0}},
+    {{{1, 0, 0}, {1, 1, 0}, {1, 1, 0.8}, {1, 0.8, 1}, {1, 0, 1}}, {1, 0, 0}},
+    {{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}, {0, -1, 0}},
+    {{{0, 1, 0}, {1, 1, 0}, {1, 1, 0.8}, {0.9, 1, 1}, {0, 1, 1}}, {0, 1, 0}},
+    {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, -1}},
+    {{{0, 0, 1}, {1, 0, 1}, {1, 0.8, 1}, {0.9, 1, 1}, {0, 1, 1}}, {0, 0, 1}},
+    {{{0.9, 1, 1}, {1, 0.8, 1}, {1, 1, 0.8}}, {2, 1, 1}}};
+  fs_test::Soup s;
+  std::map<P, std::size_t> id;
+  auto point = [&](const P& p) {
+    auto it = id.find(p);
+    if(it != id.end()) return it->second;
+    s.points.push_back(p);
+    return id[p] = s.points.size() - 1;
+  };
+  side.clear();
+  for(std::size_t k = 0; k < polygons.size(); ++k)
+  {
+    std::vector<P> q = polygons[k].first;
+    const P& a = q[0]; const P& b = q[1]; const P& c = q[2];
+    const P u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const P n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const P& out = polygons[k].second;
+    if(n[0] * out[0] + n[1] * out[1] + n[2] * out[2] < 0) std::reverse(q.begin(), q.end());
+    for(std::size_t i = 1; i + 1 < q.size(); ++i) // convex: a fan
+    {
+      s.faces.push_back({point(q[0]), point(q[i]), point(q[i + 1])});
+      side.push_back(int(k));
+    }
+  }
+  return s;
+}
+
+// A face cut out alone by its three creases is no patch of its own: it joins the side it
+// bends least from (x=1, 35.3 degrees), and the part is the cube's six sides.
+BOOST_AUTO_TEST_CASE(a_face_isolated_by_creases_joins_its_flattest_neighbour)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(cube_with_a_cut_corner(side));
+  BOOST_REQUIRE(CGAL::is_closed(m) && CGAL::is_triangle_mesh(m));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  std::vector<int> joined = side;
+  for(int& k : joined) if(k == 6) k = 1;
+  BOOST_TEST(seg.number_of_patches() == 6u);
+  BOOST_TEST(patches_are_sides(m, seg, joined, 6));
+  // the two creases of 65.9 degrees stay, the one of 35.3 is cleared
+  std::size_t triangle_creases = 0;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    const bool on_triangle = side[face(h, m).idx()] == 6 || side[face(opposite(h, m), m).idx()] == 6;
+    if(on_triangle && seg.is_crease_edge(e)) ++triangle_creases;
+  }
+  BOOST_TEST(triangle_creases == 2u);
 }
 
 // The box of box() with noise along the normals: every vertex inside a side (not on a

@@ -16,6 +16,7 @@
 #include <CGAL/Feature_segmentation/internal/compact_index.h>
 #include <CGAL/Feature_segmentation/internal/reserve_mesh.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
+#include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -243,8 +244,9 @@ constexpr int crease_smooth_filter_iterations = 10;
 // the normals neither makes creases in flat parts nor breaks real ones, and that pass
 // the gap test (keep_creases_with_gap), marked 1; on a clean tessellation (raw
 // roughness at most crease_filter_roughness) and if `tangent`, the curvature
-// discontinuities (mark_tangent_discontinuities), marked 2. `angle` receives the
-// filtered angles, `clean` whether the tessellation is clean.
+// discontinuities (mark_tangent_discontinuities), marked 2; a face that these would
+// cut out alone keeps its flattest edge (join_isolated_crease_faces). `angle` receives
+// the filtered angles, `clean` whether the tessellation is clean.
 template <typename TriangleMesh, typename VPM>
 std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle,
                                  int filter_iterations, bool tangent, std::vector<double>& angle, bool& clean,
@@ -274,6 +276,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
+  join_isolated_crease_faces(idx, angle, is_crease);
   return is_crease;
 }
 
