@@ -58,7 +58,8 @@ int main(int argc, char** argv)
   }
   if(options.help)
   {
-    print_usage(std::cout);
+    if(options.help_all) print_usage(std::cout);
+    else print_short_usage(std::cout);
     return EXIT_SUCCESS;
   }
 #ifdef CGAL_LINKED_WITH_TBB

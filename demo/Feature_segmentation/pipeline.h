@@ -13,6 +13,7 @@
 #include "read_input_mesh.h"
 #include "read_user_feature_lines.h"
 #include "run_report.h"
+#include "typed_polylines.h"
 
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
 #include <CGAL/Feature_segmentation/Feature_lines.h>
@@ -206,7 +207,8 @@ public:
                 << results.number_of_feature_edges << " feature edges" << std::endl;
     results.solver_seconds = last_solver_seconds;
     results.segmentation_stages = segmentation->stage_times();
-    results.number_of_automatic_patches = results.number_of_patches = segmentation->number_of_patches();
+    // the patches that hold a face (a patch of the vertex labels may win no face's majority)
+    results.number_of_automatic_patches = results.number_of_patches = number_of_face_patches();
     results.automatic_cut_cost = results.cut_cost = segmentation->cut_cost();
     results.number_of_oversegments = segmentation->number_of_oversegments();
     if(!options.quiet)
@@ -285,6 +287,27 @@ public:
     return file;
   }
 
+  /// The number of distinct ids >= 0 in `ids`.
+  template <typename Id>
+  static std::size_t number_of_distinct_ids(const std::vector<Id>& ids)
+  {
+    std::vector<Id> sorted;
+    for(Id i : ids) if(i >= 0) sorted.push_back(i);
+    std::sort(sorted.begin(), sorted.end());
+    return std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+  }
+
+  /// The number of patches of the current segmentation that hold a face (face_patches()).
+  std::size_t number_of_face_patches() const
+  {
+    auto face_patch = get(CGAL::dynamic_face_property_t<long>(), mesh);
+    segmentation->face_patches(face_patch);
+    std::vector<long> ids;
+    ids.reserve(num_faces(mesh));
+    for(Mesh::Face_index f : faces(mesh)) ids.push_back(get(face_patch, f));
+    return number_of_distinct_ids(ids);
+  }
+
   /// The points of a boundary curve; a closed one repeats its first.
   static std::vector<double> curve_coordinates(const FS::Boundary_curve<Mesh>& c)
   {
@@ -334,16 +357,49 @@ public:
     results.smoothing_vertex_moves = smoothing.number_of_vertex_moves;
     results.length_after = boundaries.length();
     results.anisotropic_length_after = boundaries.anisotropic_length();
-    if(!options.quiet)
-      std::cerr << "boundaries: " << results.number_of_curves << " curves, length "
-                << results.length_before << " -> " << results.length_after << " ("
-                << results.smoothing_iterations_run << " smoothing iterations)" << std::endl;
 
     // The patches of the final (smoothed) boundaries: every face has the patch covering
     // most of its area, every vertex its patch after the smoothing.
     auto face_patch = mesh.add_property_map<Mesh::Face_index, long>("f:fs_patch", -1).first;
     segmentation->face_patches(boundaries, face_patch);
     const File_patches file = file_patches(boundaries);
+
+    // Every feature used, typed (creases and seams chained from the crease edges, then
+    // the crest lines and the user's lines), and every boundary between two patches (the
+    // curves inside faces, then the creases between two patches, on the mesh's edges).
+    std::vector<Typed_polyline> features, boundary_lines;
+    append_edge_chains(
+      mesh, [&](Mesh::Edge_index e) { return segmentation->is_crease_edge(e) && !segmentation->is_curvature_discontinuity_edge(e); },
+      "crease", features);
+    append_edge_chains(
+      mesh, [&](Mesh::Edge_index e) { return segmentation->is_curvature_discontinuity_edge(e); }, "seam", features);
+    append_feature_lines(working_mesh, lines, features);
+    for(const FS::Boundary_curve<Mesh>& c : boundaries.curves())
+    {
+      Typed_polyline p;
+      p.type = "smoothed";
+      p.is_closed = c.is_closed();
+      for(const auto& q : c.points) p.points.push_back({q.point[0], q.point[1], q.point[2]});
+      boundary_lines.push_back(std::move(p));
+    }
+    append_edge_chains(
+      mesh,
+      [&](Mesh::Edge_index e) {
+        const auto h = halfedge(e, mesh);
+        return segmentation->is_crease_edge(e) && !is_border_edge(h, mesh) &&
+               get(face_patch, face(h, mesh)) != get(face_patch, face(opposite(h, mesh), mesh));
+      },
+      "crease", boundary_lines);
+    results.number_of_crease_lines = number_of_polylines(features, "crease");
+    results.number_of_seam_lines = number_of_polylines(features, "seam");
+    results.number_of_crease_curves = number_of_polylines(boundary_lines, "crease");
+    if(!options.quiet)
+      std::cerr << "boundaries: " << results.number_of_crease_curves << " curves on creases (exact), "
+                << results.number_of_curves << " inside faces, length " << results.length_before << " -> "
+                << results.length_after << " (smoothing: " << results.smoothing_vertex_moves
+                << " vertex moves in " << results.smoothing_iterations_run << " of at most "
+                << (options.smoothing_iterations ? *options.smoothing_iterations : default_smoothing_iterations)
+                << " iterations)" << std::endl;
 
     const sfs::path dir(options.output_dir);
     // summary.json marks a complete set of outputs: a previous run's goes first, and the
@@ -361,14 +417,16 @@ public:
     results.number_of_refined_vertices = refined.number_of_vertices;
     results.number_of_refined_faces = refined.number_of_faces;
 
-    results.number_of_patches = segmentation->number_of_patches();
+    results.number_of_patches = number_of_distinct_ids(file.faces);
     results.cut_cost = segmentation->cut_cost();
     // The other files are independent: written by TBB's threads, one file per task.
     const std::vector<std::pair<const char*, std::function<void(std::ostream&)> > > files = {
-      { "feature_lines.polylines.txt", [&](std::ostream& os) { FS::write_polylines(os, working_mesh, lines); } },
-      { "feature_lines.obj", [&](std::ostream& os) { FS::write_OBJ_lines(os, working_mesh, lines); } },
+      { "feature_lines.polylines.txt", [&](std::ostream& os) { write_typed_polylines(os, features); } },
+      { "feature_lines.types.txt", [&](std::ostream& os) { write_polyline_types(os, features); } },
+      { "feature_lines.obj", [&](std::ostream& os) { write_typed_OBJ_lines(os, features); } },
       { "segmentation.ply", [&](std::ostream& os) { FS::write_PLY_segmentation(os, mesh, face_patch); } },
-      { "boundaries.polylines.txt", [&](std::ostream& os) { FS::write_boundary_polylines(os, boundaries); } },
+      { "boundaries.polylines.txt", [&](std::ostream& os) { write_typed_polylines(os, boundary_lines); } },
+      { "boundaries.types.txt", [&](std::ostream& os) { write_polyline_types(os, boundary_lines); } },
       { "face_patches.txt",
         [&](std::ostream& os) {
           FS::write_patch_ids(os, boost::counting_range(std::size_t(0), file.faces.size()),

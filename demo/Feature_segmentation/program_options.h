@@ -24,6 +24,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -96,7 +97,8 @@ struct Options
   std::size_t undo_memory_mib = std::size_t(256);
   std::optional<int> smoothing_iterations;  // unset: the library's default
   bool quiet = false;
-  bool help = false;
+  bool help = false;     ///< --help: the short usage
+  bool help_all = false; ///< --help-all: every option in full, the outputs, the edit scripts
 };
 
 
@@ -193,6 +195,17 @@ inline void check_scope(const std::string& flag, Command command)
     throw Usage_error("--force is an option of 'batch'");
 }
 
+// A first argument that is a word (letters, '-' and '_' inside, no '.', no '/') and no
+// existing file: a misspelt subcommand, not a mesh (a mesh file has an extension).
+inline bool looks_like_a_subcommand(const std::string& word)
+{
+  if(word.empty() || !std::isalpha(static_cast<unsigned char>(word.front()))) return false;
+  for(char c : word)
+    if(!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') return false;
+  std::error_code ec;
+  return !std::filesystem::exists(word, ec);
+}
+
 inline Options parse_command_line(int argc, char** argv)
 {
   Options o;
@@ -200,6 +213,9 @@ inline Options parse_command_line(int argc, char** argv)
   if(argc > 1 && std::string(argv[1]) == "edit") { o.command = Command::EDIT; first = 2; }
   else if(argc > 1 && std::string(argv[1]) == "batch") { o.command = Command::BATCH; first = 2; }
   else if(argc > 1 && std::string(argv[1]) == "segment") first = 2;
+  else if(argc > 1 && looks_like_a_subcommand(argv[1]))
+    throw Usage_error("unknown subcommand '" + std::string(argv[1]) +
+                      "' (the subcommands are segment, edit and batch; a mesh is a file name with its extension)");
   const bool batch = o.command == Command::BATCH;
   bool has_input = false;
   typedef const std::string& Text;
@@ -207,6 +223,7 @@ inline Options parse_command_line(int argc, char** argv)
   po::options_description described;
   described.add_options()
     ("help,h", flag_option([&] { o.help = true; }))
+    ("help-all", flag_option([&] { o.help = o.help_all = true; }))
     ("quiet", flag_option([&] { o.quiet = true; }))
     ("no-ridges", flag_option([&] { o.ridges = false; }))
     ("no-valleys", flag_option([&] { o.valleys = false; }))

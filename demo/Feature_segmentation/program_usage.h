@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The --help text of the program `feature_segmentation`.
+// The --help and --help-all texts of the program `feature_segmentation`.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_USAGE_H
 #define CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_USAGE_H
@@ -10,6 +10,55 @@
 
 namespace fs_demo {
 
+// --help: the usage and the options, one line each, to fit a screen.
+inline void print_short_usage(std::ostream& os)
+{
+  const CGAL::Feature_segmentation::internal::Segmentation_options library;
+  os << "Usage: " << program_name << " [segment] [MESH] [--output-dir DIR] [options]\n"
+     << "       " << program_name << " edit [MESH] [--port N] [--host H] [--output-dir DIR] [options]\n"
+     << "       " << program_name << " batch INPUTS... --output-dir DIR [--jobs N] [--force] [options]\n"
+     << "\n"
+     << "Segments a triangle mesh (.off, .obj, .ply, .stl; default: fandisk) into patches\n"
+     << "bounded by its creases, ridges and valleys, and writes into DIR: segmentation.ply\n"
+     << "(a patch_id and colour per face), face_patches.txt and vertex_patches.txt (in the\n"
+     << "file's order), feature_lines.* and boundaries.* (typed polylines), summary.json.\n"
+     << "edit serves the interactive editor on http://127.0.0.1:8080/; batch runs many meshes.\n"
+     << "\n"
+     << "Options:\n"
+     << "  --output-dir DIR          output folder (default: ./" << Options().output_dir << ")\n"
+     << "  --alpha X                 how strongly features cut: larger, more patches (default: "
+     << Options().alpha << ")\n"
+     << "  --crease-angle D          creases: edges whose faces bend by D degrees or more;\n"
+     << "                            180: none, the paper's method (default: " << library.crease_angle << ")\n"
+     << "  --edits FILE              apply an edit script after the segmentation\n"
+     << "  --threads N               threads, 0: all cores (default: 0)\n"
+     << "  --quiet                   no progress or notice lines on stderr\n"
+     << "  --rings N                 curvature fit over N rings (default: 2)\n"
+     << "  --radius X                ... and X times the diagonal (default: "
+     << CGAL::Feature_segmentation::default_neighborhood_radius << ")\n"
+     << "  --strength-threshold X    drop crest lines weaker than X (default: "
+     << CGAL::Feature_segmentation::default_strength_threshold << ")\n"
+     << "  --no-ridges, --no-valleys do not detect ridges, valleys\n"
+     << "  --feature-edges FILE      the user's feature lines (CGAL polylines along mesh edges)\n"
+     << "  --gamma X                 anisotropy of the metric, >= 0 (default: " << Options().gamma << ")\n"
+     << "  --crease-filter N         normal filtering rounds on rough meshes (default: "
+     << library.crease_filter_iterations << ")\n"
+     << "  --crest-lines-on-clean-tessellations   crest lines on CAD tessellations too\n"
+     << "  --no-tangent-discontinuities           no seams where a fillet meets a plane\n"
+     << "  --solver NAME             gaec+klj, gaec or klj (default: gaec+klj)\n"
+     << "  --full-graph              solve on every vertex, not the oversegmentation\n"
+     << "  --watershed NAME          anisotropic or geodesic (default: anisotropic)\n"
+     << "  --smoothing-iterations N  boundary smoothing, 0: none (default: " << default_smoothing_iterations << ")\n"
+     << "  --undo-memory MIB         memory kept for undo (default: " << Options().undo_memory_mib << ")\n"
+     << "  --port N, --host H        edit: where to listen (default: 8080, 127.0.0.1)\n"
+     << "  --web-root DIR            edit: the editor's page (default: the installed one)\n"
+     << "  --jobs N, --force         batch: meshes at once (default: 1); redo complete ones\n"
+     << "  --help                    this text\n"
+     << "  --help-all                every option in full, the output files, the patch\n"
+     << "                            numbering and the edit scripts\n";
+}
+
+// --help-all: everything.
 inline void print_usage(std::ostream& os)
 {
   os << "Usage: " << program_name << " [segment] [MESH] [--output-dir DIR] [options]\n"
@@ -31,16 +80,20 @@ inline void print_usage(std::ostream& os)
      << "and DIR/edits.txt, the edit script that replays the session with --edits.\n"
      << "Stop it with Ctrl+C.\n"
      << "\n"
-     << "Detects the feature lines (ridges and valleys) of a triangle mesh and writes\n"
+     << "Detects the features of a triangle mesh (creases and seams of CAD tessellations,\n"
+     << "ridges and valleys, the user's lines) and writes\n"
      << "  DIR/feature_lines.polylines.txt  CGAL polylines, one feature line per line of text\n"
-     << "  DIR/feature_lines.obj            the same lines as OBJ line elements\n"
+     << "  DIR/feature_lines.types.txt      the type of each: crease, seam, ridge, valley, user\n"
+     << "  DIR/feature_lines.obj            the same lines as OBJ line elements, an object a type\n"
      << "and segments it into patches bounded by them (correlation clustering), writing\n"
      << "  DIR/segmentation.ply             the mesh (triangulated, repaired) with a patch_id\n"
      << "                                   and a red, green, blue colour per face\n"
      << "  DIR/face_patches.txt             the patch of every face of MESH, one per line\n"
      << "  DIR/vertex_patches.txt           the patch of every vertex of MESH, one per line\n"
-     << "  DIR/boundaries.polylines.txt     the boundaries between the patches, smoothed:\n"
-     << "                                   CGAL polylines, one curve per line of text\n"
+     << "  DIR/boundaries.polylines.txt     every boundary between two patches: CGAL\n"
+     << "                                   polylines, one curve per line of text, along\n"
+     << "                                   creases or smoothed inside faces\n"
+     << "  DIR/boundaries.types.txt         the kind of each: crease or smoothed\n"
      << "  DIR/segmentation_refined.ply     the mesh refined along the smoothed boundaries,\n"
      << "                                   every face in one patch (patch_id and colour)\n"
      << "  DIR/summary.json                 mesh and feature counts, patches, cut cost,\n"
@@ -138,7 +191,8 @@ inline void print_usage(std::ostream& os)
      << "                            count (default: 0)\n"
      << "  --jobs N                  batch: meshes segmented at once, 1 .. 1024 (default: 1)\n"
      << "  --force                   batch: segment again meshes whose outputs are complete\n"
-     << "  --help                    print this help and exit\n"
+     << "  --help                    the short usage\n"
+     << "  --help-all                print this text and exit\n"
      << "\n"
      << "Edit scripts (--edits FILE): one edit per line, applied in order; '#' starts a\n"
      << "comment, blank lines are ignored. Numbers are decimal, finite.\n"

@@ -133,7 +133,9 @@ struct Results
   std::size_t number_of_valleys = 0;
   std::size_t number_of_user_lines = 0;
   std::size_t number_of_lines = 0;
-  std::size_t number_of_patches = 0;       // after the edits
+  std::size_t number_of_crease_lines = 0;  // polylines of feature_lines.* typed "crease"
+  std::size_t number_of_seam_lines = 0;    // ... typed "seam" (curvature discontinuities)
+  std::size_t number_of_patches = 0;       // after the edits, the patches holding a face
   double cut_cost = 0;                     // after the edits
   std::size_t number_of_automatic_patches = 0; // before the edits
   double automatic_cut_cost = 0;           // before the edits
@@ -142,7 +144,8 @@ struct Results
   FS::internal::Stage_times segmentation_stages; // the seconds inside the stage "segmentation"
   std::vector<fs_demo::Edit_record> edits;
   // The boundaries and their smoothing.
-  std::size_t number_of_curves = 0;
+  std::size_t number_of_curves = 0;        // inside faces (smoothed)
+  std::size_t number_of_crease_curves = 0; // on creases between two patches (exact)
   std::size_t number_of_junctions = 0;
   std::size_t smoothing_iterations_run = 0;
   std::size_t smoothing_vertex_moves = 0;
@@ -225,7 +228,9 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
      {{"total", r.number_of_lines},
       {"ridges", r.number_of_ridges},
       {"valleys", r.number_of_valleys},
-      {"user", r.number_of_user_lines}}},
+      {"user", r.number_of_user_lines},
+      {"creases", r.number_of_crease_lines},
+      {"seams", r.number_of_seam_lines}}},
     {"feature_edges", r.number_of_feature_edges},
     {"crease_edges", r.number_of_crease_edges},
     {"segmentation",
@@ -248,6 +253,7 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
     {"edits", edits},
     {"boundaries",
      {{"curves", r.number_of_curves},
+      {"crease_curves", r.number_of_crease_curves},
       {"junctions", r.number_of_junctions},
       {"length_before", r.length_before},
       {"length_after", r.length_after},

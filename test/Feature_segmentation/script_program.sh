@@ -19,8 +19,8 @@ crest=--crest-lines-on-clean-tessellations
 out="$work/fandisk"
 run fandisk "$fandisk" --output-dir "$out" $crest
 check "fandisk: exit status 0 (got $rc; stderr: $(tail -n 1 "$work/fandisk.err"))" [ "$rc" -eq 0 ]
-for f in feature_lines.polylines.txt feature_lines.obj summary.json segmentation.ply \
-         face_patches.txt vertex_patches.txt boundaries.polylines.txt segmentation_refined.ply; do
+for f in feature_lines.polylines.txt feature_lines.types.txt feature_lines.obj summary.json segmentation.ply \
+         face_patches.txt vertex_patches.txt boundaries.polylines.txt boundaries.types.txt segmentation_refined.ply; do
   check "fandisk: $f written" [ -s "$out/$f" ]
 done
 check "fandisk: no error line on stderr" bash -c "! grep -q '^error:' '$work/fandisk.err'"
@@ -64,14 +64,26 @@ if [ -r /proc/self/status ]; then
       python3 -c "import sys; sys.exit(0 if float('${peak:-0}') > 1 else 1)"
   done
 fi
+# feature_lines.*: the crest lines, then the creases and seams chained from the crease
+# edges, each typed in feature_lines.types.txt and as an object of the OBJ file
+crease_lines="$(json_int "$summary" feature_lines creases)"
+seam_lines="$(json_int "$summary" feature_lines seams)"
+all_lines=$((total + crease_lines + seam_lines))
 lines="$(wc -l < "$out/feature_lines.polylines.txt")"
-check "fandisk: polylines lines ($lines) = feature lines in summary ($total)" [ "$lines" -eq "$total" ]
+check "fandisk: polylines lines ($lines) = crest lines + creases + seams in summary ($all_lines)" [ "$lines" -eq "$all_lines" ]
+check "fandisk: crease lines written (${crease_lines:-none})" [ "${crease_lines:-0}" -gt 0 ]
+check "fandisk: feature_lines.types.txt: a type per polyline" [ "$(wc -l < "$out/feature_lines.types.txt")" -eq "$lines" ]
+for t in ridge:$ridges valley:$valleys crease:$crease_lines seam:$seam_lines; do
+  check "fandisk: ${t#*:} polylines typed ${t%%:*}" [ "$(grep -cx "${t%%:*}" "$out/feature_lines.types.txt")" -eq "${t#*:}" ]
+done
+check "fandisk: feature_lines.obj: one object per type (crease, seam, ridge, valley)" \
+  [ "$(grep '^o ' "$out/feature_lines.obj" | tr '\n' ' ')" = "o crease o seam o ridge o valley " ]
 check "fandisk: polylines file well-formed" polylines_well_formed "$out/feature_lines.polylines.txt"
 obj_lines="$(grep -c '^l ' "$out/feature_lines.obj")"
 obj_vertices="$(grep -c '^v ' "$out/feature_lines.obj")"
 poly_points="$(awk '{ s += $1 } END { print s + 0 }' "$out/feature_lines.polylines.txt")"
 closed="$(awk '{ if ($2 == $(NF - 2) && $3 == $(NF - 1) && $4 == $NF) c++ } END { print c + 0 }' "$out/feature_lines.polylines.txt")"
-check "fandisk: OBJ l records ($obj_lines) = feature lines ($total)" [ "$obj_lines" -eq "$total" ]
+check "fandisk: OBJ l records ($obj_lines) = polylines ($all_lines)" [ "$obj_lines" -eq "$all_lines" ]
 check "fandisk: OBJ v records ($obj_vertices) = polyline points ($poly_points) - closed repeats ($closed)" \
   [ "$obj_vertices" -eq "$((poly_points - closed))" ]
 check "fandisk: OBJ indices within 1..$obj_vertices" \
@@ -99,11 +111,12 @@ check "fandisk: vertex_patches.txt has one line per file vertex ($header_vertice
   [ "$(wc -l < "$out/vertex_patches.txt")" -eq "$header_vertices" ]
 check "fandisk: face_patches.txt has one line per file face ($header_faces)" \
   [ "$(wc -l < "$out/face_patches.txt")" -eq "$header_faces" ]
-# Vertex labels are the clustering's, numbered 0..patches-1 without gaps. A face takes
+# The patch count is that of the faces. Vertex labels are the clustering's; a face takes
 # the majority of its vertices' patches, so a patch of a few scattered vertices may own
-# no face: face ids are only checked to be in range.
-check "fandisk: vertex ids cover exactly [0, $patches)" ids_cover "$out/vertex_patches.txt" "$patches"
-check "fandisk: face ids in [0, $patches)" ids_in_range "$out/face_patches.txt" "$patches"
+# no face: every face id is a vertex id, and the faces hold exactly $patches of them.
+check "fandisk: face ids: $patches distinct" [ "$(sort -u "$out/face_patches.txt" | wc -l)" -eq "${patches:-0}" ]
+check "fandisk: every face id is a vertex id" \
+  bash -c "[ -z \"\$(comm -23 <(sort -u '$out/face_patches.txt') <(sort -u '$out/vertex_patches.txt'))\" ]"
 check "fandisk: segmentation.ply: ASCII, $v vertices, $f faces, patch_id and colour per face" \
   ply_header_ok "$out/segmentation.ply" "$v" "$f"
 # Nothing is repaired in fandisk, so the mesh keeps the file's face order: the PLY's
@@ -120,8 +133,12 @@ check "fandisk: equal patch ids have equal colours in segmentation.ply" \
 curves="$(json_int "$summary" boundaries curves)"
 check "fandisk: boundaries.curves in summary (${curves:-none}), some for $patches patches" \
   [ "${curves:-0}" -ge 1 ]
-check "fandisk: boundaries.polylines.txt has one line per curve ($curves)" \
-  [ "$(wc -l < "$out/boundaries.polylines.txt")" -eq "${curves:-0}" ]
+crease_curves="$(json_int "$summary" boundaries crease_curves)"
+check "fandisk: boundaries.polylines.txt has one line per curve ($curves inside faces, ${crease_curves:-none} on creases)" \
+  [ "$(wc -l < "$out/boundaries.polylines.txt")" -eq "$((curves + crease_curves))" ]
+check "fandisk: boundaries.types.txt: $curves smoothed, $crease_curves crease" \
+  [ "$(grep -cx smoothed "$out/boundaries.types.txt")" -eq "$curves" -a \
+    "$(grep -cx crease "$out/boundaries.types.txt")" -eq "$crease_curves" ]
 check "fandisk: boundaries.polylines.txt well-formed" polylines_well_formed "$out/boundaries.polylines.txt"
 check "fandisk: smoothing_iterations = 20 (the library's default) in options" \
   [ "$(json_int "$summary" options smoothing_iterations)" = 20 ]
@@ -168,17 +185,28 @@ done
 # A clean CAD tessellation: its feature edges are exactly its crease edges (876 creases
 # and the 50 edges of its blends' tangent lines, as test_tangent_discontinuities finds),
 # no crest line; every patch boundary runs along them, so there is no boundary curve to
-# smooth, and the 21 patches are the regions they bound (every one owns faces).
+# smooth, and the 21 patches are the regions they bound (every one owns faces). The
+# feature files hold the creases and seams as polylines of those 926 edges, and the
+# boundary file the creases between two patches.
 run default "$fandisk" --output-dir "$work/default" --quiet
 ds="$work/default/summary.json"
 check "default: exit status 0 (stderr: $(tail -n 1 "$work/default.err"))" [ "$rc" -eq 0 ]
 check "default: no crest line on a clean tessellation ($(json_int "$ds" feature_lines total))" \
-  [ "$(json_int "$ds" feature_lines total)" = 0 -a ! -s "$work/default/feature_lines.polylines.txt" ]
+  [ "$(json_int "$ds" feature_lines total)" = 0 -a -z "$(grep -v -x -e crease -e seam "$work/default/feature_lines.types.txt")" ]
+# a polyline of n points covers n - 1 edges
+check "default: the crease and seam polylines cover the 926 crease edges" \
+  [ "$(awk '{ s += $1 - 1 } END { print s }' "$work/default/feature_lines.polylines.txt")" = 926 ]
+check "default: the seams are the 50 edges of the blends' tangent lines" \
+  [ "$(paste -d' ' "$work/default/feature_lines.types.txt" "$work/default/feature_lines.polylines.txt" |
+       awk '$1 == "seam" { s += $2 - 1 } END { print s + 0 }')" = 50 ]
 check "default: 926 crease edges, the only feature edges" \
   [ "$(json_int "$ds" "" crease_edges)" = 926 -a "$(json_int "$ds" "" feature_edges)" = 926 ]
 check "default: 21 patches ($(json_int "$ds" segmentation patches))" [ "$(json_int "$ds" segmentation patches)" = 21 ]
-check "default: no boundary curve (every boundary is a crease)" \
-  [ "$(json_int "$ds" boundaries curves)" = 0 -a ! -s "$work/default/boundaries.polylines.txt" ]
+check "default: no boundary curve inside faces, every boundary on a crease" \
+  [ "$(json_int "$ds" boundaries curves)" = 0 -a "$(json_int "$ds" boundaries crease_curves)" -gt 0 -a \
+    -z "$(grep -v -x crease "$work/default/boundaries.types.txt")" ]
+check "default: the crease boundaries are polylines of crease edges (at most 926)" \
+  [ "$(awk '{ s += $1 - 1 } END { print s }' "$work/default/boundaries.polylines.txt")" -le 926 ]
 check "default: face ids cover exactly [0, 21)" ids_cover "$work/default/face_patches.txt" 21
 check "default: options.crest_lines_on_clean_tessellations false in summary" \
   [ "$(json_get "$ds" options crest_lines_on_clean_tessellations)" = false ]
@@ -195,7 +223,8 @@ run no_lines "$fandisk" --output-dir "$work/no_lines" $crest --strength-threshol
 check "--strength-threshold 1e9: exit status 0" [ "$rc" -eq 0 ]
 check "--strength-threshold 1e9: no feature lines" \
   [ "$(json_int "$work/no_lines/summary.json" feature_lines total)" = 0 ]
-check "--strength-threshold 1e9: empty polylines file" [ ! -s "$work/no_lines/feature_lines.polylines.txt" ]
+check "--strength-threshold 1e9: only creases and seams in the polylines file" \
+  [ -z "$(grep -v -x -e crease -e seam "$work/no_lines/feature_lines.types.txt")" ]
 check "--rings 1 recorded in summary" [ "$(json_get "$work/no_lines/summary.json" options rings)" = 1 ]
 
 # alpha weighs the feature edges: a larger alpha cuts more of them. Measured on fandisk
@@ -214,7 +243,8 @@ check "--alpha 1.0 recorded in summary" [ "$(json_number "$work/alpha_high/summa
 # One patch has no boundary: no curve, nothing split.
 if [ "${patches_low:-0}" -eq 1 ]; then
   check "--alpha 0.4: one patch, no boundary curve" \
-    [ "$(json_int "$work/alpha_low/summary.json" boundaries curves)" = 0 -a ! -s "$work/alpha_low/boundaries.polylines.txt" ]
+    [ "$(json_int "$work/alpha_low/summary.json" boundaries curves)" = 0 -a ! -s "$work/alpha_low/boundaries.polylines.txt" -a \
+      "$(json_int "$work/alpha_low/summary.json" boundaries crease_curves)" = 0 ]
   check "--alpha 0.4: one patch, the refined mesh is the mesh ($header_faces faces)" \
     [ "$(json_int "$work/alpha_low/summary.json" boundaries refined_faces)" = "$header_faces" ]
 fi
@@ -225,7 +255,7 @@ check "--smoothing-iterations 0: exit status 0 (stderr: $(tail -n 1 "$work/unsmo
 check "--smoothing-iterations 0: recorded in options, no iteration run" \
   [ "$(json_int "$us" options smoothing_iterations)" = 0 -a "$(json_int "$us" boundaries smoothing_iterations)" = 0 ]
 check "--smoothing-iterations 0: the same $curves curves" [ "$(json_int "$us" boundaries curves)" = "$curves" -a \
-   "$(wc -l < "$work/unsmoothed/boundaries.polylines.txt")" -eq "${curves:-0}" ]
+   "$(grep -cx smoothed "$work/unsmoothed/boundaries.types.txt")" -eq "${curves:-0}" ]
 check "--smoothing-iterations 0: length before = after ($(json_number "$us" boundaries length_before))" \
   [ -n "$(json_number "$us" boundaries length_before)" -a \
    "$(json_number "$us" boundaries length_before)" = "$(json_number "$us" boundaries length_after)" -a \
@@ -262,6 +292,15 @@ check "--feature-edges: the user line is written" [ "$(wc -l < "$work/user/featu
 run help --help
 check "--help: exit status 0" [ "$rc" -eq 0 ]
 check "--help: usage on stdout" grep -q '^Usage: feature_segmentation' "$work/help.out"
+check "--help: fits a screen ($(wc -l < "$work/help.out") lines <= 60), every option named" \
+  bash -c "[ \$(wc -l < '$work/help.out') -le 60 ] && grep -q -- '--alpha X' '$work/help.out' && grep -q -- '--help-all' '$work/help.out'"
+run help_all --help-all
+help_all_ok() { [ "$rc" -eq 0 ] && grep -q '^Edit scripts' "$work/help_all.out"; }
+check "--help-all: exit status 0, the edit scripts explained" help_all_ok
+# a misspelt subcommand is named as such, not taken for a second mesh
+run misspelt edti "$fandisk"
+misspelt_ok() { [ "$rc" -eq 2 ] && grep -q "^error: unknown subcommand 'edti'" "$work/misspelt.err"; }
+check "edti: exit status 2, 'unknown subcommand' ($(cat "$work/misspelt.err"))" misspelt_ok
 
 # ---- fandisk as OBJ (STL and PLY: script_program_inputs.sh) ------------------------------
 # fandisk as OBJ: same mesh, same feature lines as from the OFF file.
@@ -335,9 +374,11 @@ check "--edits: every edit has its seconds" \
 check "--edits: automatic_patches = patches of the run without edits ($patches)" \
   [ "$(json_int "$es" segmentation automatic_patches)" = "$patches" ]
 # alpha 1.0 moves alpha_e to 1.0 on every feature edge and re-solves all of G': the
-# weights and the solve of --alpha 1.0.
-check "--edits: 'alpha 1.0' gives the patches of --alpha 1.0 ($(edit 3 patches) = ${patches_high:-none})" \
-  [ "$(edit 3 patches)" = "$patches_high" ]
+# weights and the solve of --alpha 1.0 (both counted before the smoothing: the faces'
+# patches by the majority of their vertices).
+automatic_high="$(json_int "$work/alpha_high/summary.json" segmentation automatic_patches)"
+check "--edits: 'alpha 1.0' gives the patches of --alpha 1.0 ($(edit 3 patches) = ${automatic_high:-none})" \
+  [ "$(edit 3 patches)" = "$automatic_high" ]
 check "--edits: the ball of the refinement has faces ($(edit 4 faces))" [ "$(edit 4 faces)" -gt 0 ]
 check "--edits: merge does not increase the patches ($(edit 5 patches) <= $(edit 4 patches))" \
   [ "$(edit 5 patches)" -le "$(edit 4 patches)" ]
@@ -348,20 +389,20 @@ check "--edits: undo restores the cut cost before the merge ($(edit 6 cut_cost) 
   [ "$(edit 6 cut_cost)" = "$(edit 4 cut_cost)" ]
 check "--edits: the sketch has its 3 points" [ "$(edit 7 points)" = 3 ]
 final_patches="$(json_int "$es" segmentation patches)"
-check "--edits: segmentation.patches ($final_patches) = patches after the last edit ($(edit 7 patches))" \
-  [ "$final_patches" = "$(edit 7 patches)" ]
 # The patch files are the edited result. A face takes the patch covering most of its
 # area under the smoothed boundaries, so a patch narrower than half a triangle (the
-# sketch's) may own no face; the refined mesh, whose faces lie in exactly one patch,
-# has every patch. A vertex on a crease takes the patch of its first face's side, so a
-# patch one face wide between creases may have no vertex of its own.
-check "--edits: the patch files are the edited result (face ids in [0, $final_patches))" \
-  ids_in_range "$work/edits/face_patches.txt" "$final_patches"
-check "--edits: the refined mesh has every patch of the edited result, [0, $final_patches)" \
-  ids_cover <(awk -v nv="$(sed -n 's/^element vertex \([0-9]*\)$/\1/p' "$work/edits/segmentation_refined.ply")" \
-                'p && ++row > nv { print $5 } /^end_header$/ { p = 1 }' "$work/edits/segmentation_refined.ply") \
-            "$final_patches"
-check "--edits: vertex ids in [0, $final_patches)" ids_in_range "$work/edits/vertex_patches.txt" "$final_patches"
+# sketch's) may own no face; the count of the summary is that of the faces. The refined
+# mesh, whose faces lie in exactly one patch, has every patch. A vertex on a crease takes
+# the patch of its first face's side, so a patch one face wide between creases may have
+# no vertex of its own.
+check "--edits: segmentation.patches ($final_patches) = the patches of face_patches.txt" \
+  [ "$final_patches" = "$(sort -u "$work/edits/face_patches.txt" | wc -l)" ]
+awk -v nv="$(sed -n 's/^element vertex \([0-9]*\)$/\1/p' "$work/edits/segmentation_refined.ply")" \
+    'p && ++row > nv { print $5 } /^end_header$/ { p = 1 }' "$work/edits/segmentation_refined.ply" | sort -u > "$work/refined_ids"
+sort -u "$work/edits/face_patches.txt" > "$work/face_ids"
+sort -u "$work/edits/vertex_patches.txt" > "$work/vertex_ids"
+check "--edits: the refined mesh has every patch of the faces" [ -z "$(comm -23 "$work/face_ids" "$work/refined_ids")" ]
+check "--edits: every vertex id is a patch of the refined mesh" [ -z "$(comm -23 "$work/vertex_ids" "$work/refined_ids")" ]
 check "--edits: a progress line per edit on stderr" [ "$(grep -c '^edit .*edits.txt:[0-9]*: ' "$work/edits.err")" -eq 5 ]
 # A face of the file is all the triangles it became: the box's quads 0 and 4 are 4
 # triangles; a region of only one patch's faces leaves a merge without effect.

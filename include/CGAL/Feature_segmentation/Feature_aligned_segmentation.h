@@ -214,8 +214,13 @@ public:
   {
     return is_crease_edge(e) || state().features->is_feature_edge[pre().working_edge(e)] != 0;
   }
-  /// Whether an edge is a crease: its dihedral angle is at least `crease_angle`.
+  /// Whether an edge is a crease: its dihedral angle is at least `crease_angle`, or it is
+  /// a curvature discontinuity (`is_curvature_discontinuity_edge()`).
   bool is_crease_edge(edge_descriptor e) const { return pre().is_crease_edge(e); }
+  /// Whether an edge is a crease found as a curvature discontinuity of a clean CAD
+  /// tessellation (a seam where a fillet meets a plane without a crease angle; named
+  /// parameter `tangent_discontinuities`) rather than by its dihedral angle.
+  bool is_curvature_discontinuity_edge(edge_descriptor e) const { return pre().is_curvature_discontinuity_edge(e); }
   /// The number of feature edges: the creases and the edges of `working_mesh()` that
   /// the feature lines cross.
   std::size_t number_of_feature_edges() const { return state().features->number_of_feature_edges; }

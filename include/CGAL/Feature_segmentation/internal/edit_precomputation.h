@@ -104,6 +104,10 @@ public:
     return cut.is_cut() ? ties_of(cut.input_edge[e]) : std::make_pair(e, e);
   }
   bool is_crease_edge(edge_descriptor e) const { return cut.is_cut() && cut.is_crease[input_idx->id(e)] != 0; }
+  bool is_curvature_discontinuity_edge(edge_descriptor e) const
+  {
+    return cut.is_cut() && cut.is_crease[input_idx->id(e)] == 2;
+  }
 
   // The feature edges: those of the working mesh (lines, user, sketches) and the creases
   // (each counted once, not per tie).

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The polylines of the program's outputs, each with its type: the features the
+// segmentation used (crest lines as ridges and valleys, the user's lines, and the creases
+// of a CAD tessellation, chained from its crease edges, split into creases found by their
+// dihedral angle and seams found as curvature discontinuities), and the boundaries
+// between patches (the smoothed curves inside faces, and the creases between two
+// different patches, exactly on the mesh's edges). Written in CGAL's polylines format
+// with the types in a companion file, and as OBJ with one object per type.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_TYPED_POLYLINES_H
+#define CGAL_FEATURE_SEGMENTATION_DEMO_TYPED_POLYLINES_H
+
+#include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <array>
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fs_demo {
+
+/// A polyline with its type ("crease", "seam", "ridge", "valley", "user", "smoothed").
+struct Typed_polyline
+{
+  std::string type;
+  std::vector<std::array<double, 3> > points;
+  bool is_closed = false; ///< the last point joins the first (not repeated in `points`)
+};
+
+/// The types in the order the OBJ file lists its objects.
+inline const std::vector<std::string>& polyline_types()
+{
+  static const std::vector<std::string> types = {"crease", "seam", "ridge", "valley", "user", "smoothed"};
+  return types;
+}
+
+/// The marked edges of `mesh` chained into polylines of vertices: a chain runs through
+/// the vertices with two marked edges and ends at the others; what is left are closed
+/// loops. Deterministic: chains start at the vertices in their iteration order.
+template <typename Mesh, typename IsMarked>
+std::vector<std::pair<std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>, bool> >
+edge_chains(const Mesh& mesh, IsMarked is_marked)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  auto degree = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
+  auto used = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
+  for(vertex_descriptor v : vertices(mesh)) put(degree, v, 0);
+  for(auto e : edges(mesh))
+  {
+    put(used, e, false);
+    if(!is_marked(e)) continue;
+    put(degree, source(halfedge(e, mesh), mesh), get(degree, source(halfedge(e, mesh), mesh)) + 1);
+    put(degree, target(halfedge(e, mesh), mesh), get(degree, target(halfedge(e, mesh), mesh)) + 1);
+  }
+  auto next_out = [&](vertex_descriptor v) {
+    for(halfedge_descriptor h : CGAL::halfedges_around_source(v, mesh))
+      if(is_marked(edge(h, mesh)) && !get(used, edge(h, mesh))) return h;
+    return boost::graph_traits<Mesh>::null_halfedge();
+  };
+  std::vector<std::pair<std::vector<vertex_descriptor>, bool> > chains;
+  auto walk = [&](halfedge_descriptor h) {
+    std::vector<vertex_descriptor> chain(1, source(h, mesh));
+    const vertex_descriptor start = source(h, mesh);
+    bool closed = false;
+    while(h != boost::graph_traits<Mesh>::null_halfedge())
+    {
+      put(used, edge(h, mesh), true);
+      const vertex_descriptor w = target(h, mesh);
+      if(w == start) { closed = true; break; }
+      chain.push_back(w);
+      if(get(degree, w) != 2) break;
+      h = next_out(w);
+    }
+    chains.emplace_back(std::move(chain), closed);
+  };
+  for(vertex_descriptor v : vertices(mesh))
+    if(get(degree, v) != 2)
+      for(halfedge_descriptor h = next_out(v); h != boost::graph_traits<Mesh>::null_halfedge(); h = next_out(v))
+        walk(h);
+  for(auto e : edges(mesh)) // loops: every vertex of two marked edges
+    if(is_marked(e) && !get(used, e)) walk(halfedge(e, mesh));
+  return chains;
+}
+
+/// Appends to `out` the chains of the marked edges of `mesh` as polylines of `type`.
+template <typename Mesh, typename IsMarked>
+void append_edge_chains(const Mesh& mesh, IsMarked is_marked, const std::string& type,
+                        std::vector<Typed_polyline>& out)
+{
+  for(const auto& chain : edge_chains(mesh, is_marked))
+  {
+    Typed_polyline p;
+    p.type = type;
+    p.is_closed = chain.second;
+    for(auto v : chain.first)
+    {
+      const auto& q = mesh.point(v);
+      p.points.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
+    }
+    out.push_back(std::move(p));
+  }
+}
+
+/// Appends the feature lines `lines` of `mesh` (ridges, valleys, the user's lines).
+template <typename Mesh>
+void append_feature_lines(const Mesh& mesh, const CGAL::Feature_segmentation::Feature_lines<Mesh>& lines,
+                          std::vector<Typed_polyline>& out)
+{
+  namespace FS = CGAL::Feature_segmentation;
+  for(const FS::Feature_line<Mesh>& line : lines.lines)
+  {
+    Typed_polyline p;
+    p.type = FS::internal::feature_line_type_name(line.type);
+    p.is_closed = line.is_closed;
+    for(const FS::Feature_point<Mesh>& fp : line.points)
+    {
+      const auto q = fp.point(mesh, get(CGAL::vertex_point, mesh));
+      p.points.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
+    }
+    out.push_back(std::move(p));
+  }
+}
+
+/// The number of polylines of `type`.
+inline std::size_t number_of_polylines(const std::vector<Typed_polyline>& lines, const std::string& type)
+{
+  std::size_t n = 0;
+  for(const Typed_polyline& l : lines) n += l.type == type;
+  return n;
+}
+
+/// CGAL's polylines format: a line per polyline, its number of points then their
+/// coordinates; a closed polyline repeats its first point.
+inline void write_typed_polylines(std::ostream& os, const std::vector<Typed_polyline>& lines)
+{
+  namespace FSI = CGAL::Feature_segmentation::internal;
+  for(const Typed_polyline& l : lines)
+  {
+    os << l.points.size() + (l.is_closed && !l.points.empty() ? 1 : 0);
+    for(const auto& p : l.points)
+    {
+      for(double x : p) { os << ' '; FSI::write_double(os, x); }
+    }
+    if(l.is_closed && !l.points.empty())
+      for(double x : l.points.front()) { os << ' '; FSI::write_double(os, x); }
+    os << '\n';
+  }
+}
+
+/// The companion of write_typed_polylines(): the type of each polyline, a line each.
+inline void write_polyline_types(std::ostream& os, const std::vector<Typed_polyline>& lines)
+{
+  for(const Typed_polyline& l : lines) os << l.type << '\n';
+}
+
+/// OBJ line elements, one object per type (`o crease`, `o ridge`, ...), so that a
+/// viewer can show or hide each kind.
+inline void write_typed_OBJ_lines(std::ostream& os, const std::vector<Typed_polyline>& lines)
+{
+  namespace FSI = CGAL::Feature_segmentation::internal;
+  os << "# " << lines.size() << " polylines, one object per type\n";
+  std::size_t next_index = 1; // OBJ indices start at 1 and run over the whole file
+  for(const std::string& type : polyline_types())
+  {
+    if(number_of_polylines(lines, type) == 0) continue;
+    os << "o " << type << '\n';
+    for(const Typed_polyline& l : lines)
+    {
+      if(l.type != type || l.points.size() < 2) continue;
+      for(const auto& p : l.points)
+      {
+        os << 'v';
+        for(double x : p) { os << ' '; FSI::write_double(os, x); }
+        os << '\n';
+      }
+      os << 'l';
+      for(std::size_t k = 0; k < l.points.size(); ++k) os << ' ' << next_index + k;
+      if(l.is_closed) os << ' ' << next_index;
+      os << '\n';
+      next_index += l.points.size();
+    }
+  }
+}
+
+} // namespace fs_demo
+
+#endif // CGAL_FEATURE_SEGMENTATION_DEMO_TYPED_POLYLINES_H
