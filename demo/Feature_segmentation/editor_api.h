@@ -267,7 +267,8 @@ public:
     faces.reserve(m_triangles.size());
     for(Mesh::Face_index f : m_triangles) faces.push_back(seg.patch(f));
     for(Mesh::Vertex_index v : m.vertices()) vertices.push_back(seg.patch(v));
-    return nlohmann::json{{"patches", seg.number_of_patches()}, {"face_patches", faces}, {"vertex_patches", vertices}}
+    return nlohmann::json{{"patches", m_run->pipeline.number_of_face_patches()}, {"face_patches", faces},
+                          {"vertex_patches", vertices}}
       .dump();
   }
 
@@ -365,7 +366,7 @@ private:
     if(m_last)
       last = {{"op", m_last->verb}, {"seconds", m_last->seconds}, {"prepare_seconds", m_last->prepare_seconds},
               {"server_seconds", m_last_server_seconds}, {"patches", m_last->patches}};
-    return {{"patches", seg.number_of_patches()},
+    return {{"patches", m_run->pipeline.number_of_face_patches()}, // the patches holding a face, as the program counts
             {"alpha", seg.alpha()},
             {"cut_cost", seg.cut_cost()},
             {"edits", edit_script_lines(m_history)},

@@ -14,6 +14,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cerrno>
+#include <filesystem>
 #include <memory>
 #include <set>
 #include <regex>
@@ -83,9 +85,26 @@ Options options_from_kwargs(const py::kwargs& kwargs)
   }
 }
 
-// The (n, 3) and (m, 3) arrays as a polygon soup: the one copy in.
-Mesh_soup soup_from_arrays(const py::array& vertices, const py::array& faces)
+// `x` through numpy.asarray, as numpy functions take their inputs (a list of lists is
+// an array); what numpy cannot make an array of is a short ValueError naming `what`.
+py::array as_array(const py::object& x, const char* what)
 {
+  try
+  {
+    return py::module_::import("numpy").attr("asarray")(x);
+  }
+  catch(const py::error_already_set&)
+  {
+    throw py::value_error(std::string(what) + " must be an array or a nested sequence of numbers (got " +
+                          std::string(py::str(py::type::of(x).attr("__name__"))) + ")");
+  }
+}
+
+// The (n, 3) and (m, 3) arrays as a polygon soup: the one copy in.
+Mesh_soup soup_from_arrays(const py::object& vertices_in, const py::object& faces_in)
+{
+  const py::array vertices = as_array(vertices_in, "vertices");
+  const py::array faces = as_array(faces_in, "faces");
   if(vertices.ndim() != 2 || vertices.shape(1) != 3)
     throw py::value_error("vertices must be an (n, 3) array of coordinates");
   if(faces.ndim() != 2 || faces.shape(1) != 3)
@@ -142,7 +161,7 @@ struct Result
 class Session
 {
 public:
-  Session(const py::array& vertices, const py::array& faces, const py::kwargs& kwargs)
+  Session(const py::object& vertices, const py::object& faces, const py::kwargs& kwargs)
     : m_options(options_from_kwargs(kwargs)), m_timer(true), m_pipeline(m_options, m_timer, m_results)
   {
     Mesh_soup soup = soup_from_arrays(vertices, faces);
@@ -157,7 +176,7 @@ public:
   {
     const auto& seg = *m_pipeline.segmentation;
     Result r;
-    r.patches = seg.number_of_patches();
+    r.patches = m_pipeline.number_of_face_patches(); // the patches holding a face, as the program counts
     r.cut_cost = seg.cut_cost();
     r.faces = num_faces(m_pipeline.mesh);
     r.vertices = num_vertices(m_pipeline.mesh);
@@ -213,7 +232,7 @@ public:
       }
     }
     m_history.push_back(e);
-    return m_pipeline.segmentation->number_of_patches();
+    return m_pipeline.number_of_face_patches();
   }
 
   std::vector<std::string> edits() const { return edit_script_lines(m_history); }
@@ -354,7 +373,7 @@ A segmentation that can be edited (the paper's Section 4).
 Segmentation(vertices, faces, **options): vertices an (n, 3) float array, faces an
 (m, 3) integer array; options as for segment(). Face indices of the edits, and
 face_patches(), follow the rows of `faces`.)doc")
-    .def(py::init<const py::array&, const py::array&, const py::kwargs&>(), py::arg("vertices"), py::arg("faces"))
+    .def(py::init<const py::object&, const py::object&, const py::kwargs&>(), py::arg("vertices"), py::arg("faces"))
     .def_property_readonly("patches", [](const Session& s) { return s.result().patches; }, "number of patches")
     .def_property_readonly("cut_cost", [](const Session& s) { return s.result().cut_cost; }, "cut cost")
     .def_property_readonly("alpha", &Session::alpha, "the global alpha")
@@ -465,6 +484,14 @@ face_patches(), follow the rows of `faces`.)doc")
         }, py::arg("directory"), py::arg("rows"),
         "writes batch_summary.csv and batch_summary.jsonl, as `feature_segmentation batch` does");
   m.def("read_mesh", [](const std::string& path) {
+          std::error_code ec;
+          if(!std::filesystem::exists(path, ec))
+          {
+            // FileNotFoundError, as open() raises it: errno ENOENT and the file name
+            PyErr_SetObject(PyExc_FileNotFoundError,
+                            py::make_tuple(ENOENT, "No such file", path).ptr());
+            throw py::error_already_set();
+          }
           Mesh mesh;
           {
             py::gil_scoped_release release;

@@ -138,7 +138,7 @@ def test_command_line(inputs, tmp_path):
     assert ok.returncode == 0, ok.stderr
     assert "progress: [1/2]" in ok.stderr and "s left" in ok.stderr
     rows = table(tmp_path / "cli" / "batch_summary.csv")
-    assert rows[0]["patches"] == "28"  # fandisk with its crest lines at alpha 1 (21 at the defaults)
+    assert rows[0]["patches"] == "26"  # fandisk with its crest lines at alpha 1: the faces' patches (21 at the defaults)
     bad = subprocess.run([sys.executable, "-m", "feature_segmentation.batch", str(inputs / "fandisk.off"),
                           "--output-dir", str(tmp_path / "bad"), "--alpha", "nan"], env=env, capture_output=True,
                          text=True)
