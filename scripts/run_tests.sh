@@ -9,7 +9,9 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m "${1:-$here/build}")"
 "$here/scripts/install_dependencies.sh"
 jobs="$(nproc 2>/dev/null || echo 2)"
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFEATURE_SEGMENTATION_BUILD_TESTS=ON
+# The benchmarks are not built: no test runs them (their folder's quality tests are).
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFEATURE_SEGMENTATION_BUILD_TESTS=ON \
+  -DFEATURE_SEGMENTATION_BUILD_BENCHMARKS=OFF
 cmake --build "$build" -j "$jobs"
 cd "$build"
 ctest --output-on-failure -j "$jobs"

@@ -63,6 +63,17 @@ public:
 
 namespace internal {
 
+/// The largest magnitude of an edit's value (alpha, amount, factor), and the smallest of a
+/// nonzero one: outside, the weights or the cut cost overflow, or the edit script's text
+/// does not read back (a subnormal number).
+constexpr double editor_largest_value = 1e9, editor_smallest_value = 1e-9;
+/// The most points a sketch may have (each point is located on the surface and each
+/// segment walked across the mesh: the work of one request stays bounded).
+constexpr std::size_t editor_max_sketch_points = 1000;
+
+// An edit's value: finite, 0 or of magnitude in [editor_smallest_value, editor_largest_value].
+inline double json_edit_value(const nlohmann::json& j, const char* key, const std::string& op);
+
 inline double json_finite(const nlohmann::json& j, const char* key, const std::string& op)
 {
   const auto it = j.find(key);
@@ -73,6 +84,15 @@ inline double json_finite(const nlohmann::json& j, const char* key, const std::s
   const double x = it->get<double>();
   if(!std::isfinite(x))
     throw Request_error(op + ": '" + key + "' must be a finite number");
+  return x;
+}
+
+inline double json_edit_value(const nlohmann::json& j, const char* key, const std::string& op)
+{
+  const double x = json_finite(j, key, op);
+  if(std::abs(x) > editor_largest_value || (x != 0 && std::abs(x) < editor_smallest_value))
+    throw Request_error(op + ": '" + key + "' must be 0 or of magnitude between 1e-9 and 1e9 (got " +
+                        j.find(key)->dump() + ")");
   return x;
 }
 
@@ -129,7 +149,7 @@ inline Script_edit script_edit_from_json(const nlohmann::json& j, std::size_t nu
   if(op == "alpha")
   {
     internal::json_keys(j, op, {"value"});
-    e.value = internal::json_finite(j, "value", op);
+    e.value = internal::json_edit_value(j, "value", op);
   }
   else if(op == "refine" || op == "coarsen" || op == "scale")
   {
@@ -137,7 +157,7 @@ inline Script_edit script_edit_from_json(const nlohmann::json& j, std::size_t nu
     internal::json_keys(j, op, {"faces", key});
     e.region.kind = Script_region::TRIANGLES;
     e.region.faces = internal::json_faces(j, op, number_of_triangles);
-    e.value = internal::json_finite(j, key, op);
+    e.value = internal::json_edit_value(j, key, op);
     if(op == "scale" && e.value < 0)
       throw Request_error("scale: 'factor' must be >= 0");
     if(op == "coarsen")
@@ -152,12 +172,15 @@ inline Script_edit script_edit_from_json(const nlohmann::json& j, std::size_t nu
   else if(op == "sketch")
   {
     internal::json_keys(j, op, {"points", "alpha"});
-    e.value = j.contains("alpha") ? internal::json_finite(j, "alpha", op) : default_sketch_alpha;
+    e.value = j.contains("alpha") ? internal::json_edit_value(j, "alpha", op) : default_sketch_alpha;
     if(!(e.value > 1))
       throw Request_error("sketch: 'alpha' must be > 1");
     const auto it = j.find("points");
     if(it == j.end() || !it->is_array() || it->size() < 2)
       throw Request_error("sketch: 'points' must be an array of at least two [x, y, z] points");
+    if(it->size() > internal::editor_max_sketch_points)
+      throw Request_error("sketch: at most " + std::to_string(internal::editor_max_sketch_points) + " points (got " +
+                          std::to_string(it->size()) + ")");
     for(const nlohmann::json& p : *it)
     {
       if(!p.is_array() || p.size() != 3)

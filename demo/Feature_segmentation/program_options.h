@@ -63,6 +63,7 @@ struct Options
   std::string host = "127.0.0.1";
   int port = 8080;
   std::string web_root;
+  bool no_token = false; ///< edit: serve the API without the session token (scripted local use)
   // batch: the meshes, folders of meshes and list files given; the meshes segmented at
   // once; whether meshes with complete outputs are done again.
   std::vector<std::string> inputs;
@@ -187,7 +188,7 @@ inline std::vector<po::option> parse_as_before(std::vector<std::string>& args)
 // The options of one subcommand are refused by the others, not ignored.
 inline void check_scope(const std::string& flag, Command command)
 {
-  if(command != Command::EDIT && (flag == "--port" || flag == "--host" || flag == "--web-root"))
+  if(command != Command::EDIT && (flag == "--port" || flag == "--host" || flag == "--web-root" || flag == "--no-token"))
     throw Usage_error(flag + " is an option of 'edit' (" + program_name + " edit MESH " + flag + " ...)");
   if(command != Command::BATCH && flag == "--jobs")
     throw Usage_error("--jobs is an option of 'batch' (" + std::string(program_name) + " batch INPUTS --jobs N)");
@@ -231,6 +232,7 @@ inline Options parse_command_line(int argc, char** argv)
     ("crest-lines-on-clean-tessellations", flag_option([&] { o.crest_lines_on_clean_tessellations = true; }))
     ("no-tangent-discontinuities", flag_option([&] { o.tangent_discontinuities = false; }))
     ("force", flag_option([&] { o.force = true; }))
+    ("no-token", flag_option([&] { o.no_token = true; }))
     ("output-dir", text_option(o.output_dir, "--output-dir expects a non-empty folder name"))
     ("rings", value_option([&](Text t) {
        o.rings = parse_int("--rings", t);

@@ -28,7 +28,7 @@ namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Surface_mesh<Epick::Point_3> SM;
-typedef CGAL::Polyhedron_3<Epick> Poly;
+typedef CGAL::Polyhedron_3<Epick> Poly_epick;
 
 // The invariants every indexing keeps, on a mesh of nv vertices, ne edges, nf faces.
 template <typename Mesh>
@@ -103,7 +103,7 @@ BOOST_AUTO_TEST_CASE(surface_mesh_with_removed_elements)
 BOOST_AUTO_TEST_CASE(polyhedron)
 {
   const SM sm = fs_test::to_mesh<SM>(fs_test::plane(1., 4));
-  Poly p;
+  Poly_epick p;
   CGAL::copy_face_graph(sm, p);
   check_indexing(p, 25, 56, 32);
 }

@@ -11,9 +11,18 @@ const $ = (id) => document.getElementById(id);
 const view = $('view');
 
 // ---- the server -------------------------------------------------------------------
+// The session token of the address the program printed (?token=...): kept for the tab's
+// reloads, sent with every API call as a header and as a same-site cookie.
+const token = new URLSearchParams(location.search).get('token') || sessionStorage.getItem('fs_editor_token') || '';
+if (token) {
+  sessionStorage.setItem('fs_editor_token', token);
+  document.cookie = `fs_editor_token=${encodeURIComponent(token)}; path=/; SameSite=Strict`;
+}
+
 async function api(path, body) {
-  const init = body === undefined ? {} : {
-    method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) };
+  const headers = { 'X-Editor-Token': token };
+  const init = body === undefined ? { headers } : {
+    method: 'POST', headers: { ...headers, 'Content-Type': 'application/json' }, body: JSON.stringify(body) };
   const res = await fetch(path, init);
   const json = await res.json();
   if (!res.ok) throw new Error(json.error || res.statusText);

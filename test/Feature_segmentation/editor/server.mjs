@@ -13,7 +13,8 @@ export const fandisk = join(process.env.FS_MESH_DIR, 'fandisk.off');
 // for the crest lines too.
 export const crestLines = ['--crest-lines-on-clean-tessellations'];
 
-// Resolves to { url, outputDir, stop() } once the server prints its address.
+// Resolves to { url, token, page, outputDir, stop() } once the server prints its address
+// (page: the printed address, url: the server's root without the token).
 export function startEditor(mesh = fandisk, extra = crestLines) {
   const outputDir = mkdtempSync(join(tmpdir(), 'fs-editor-'));
   const child = spawn(program, ['edit', mesh, '--port', '0', '--quiet', '--output-dir', outputDir, ...extra],
@@ -28,7 +29,9 @@ export function startEditor(mesh = fandisk, extra = crestLines) {
       const m = stdout.match(/editor: (http:\/\/\S+)/);
       if (m) {
         clearTimeout(timer);
-        resolve({ url: m[1], outputDir, child, stop: () => child.kill('SIGTERM') });
+        const page = new URL(m[1]);
+        const token = page.searchParams.get('token') || '';
+        resolve({ url: page.origin + '/', token, page: m[1], outputDir, child, stop: () => child.kill('SIGTERM') });
       }
     });
     child.on('exit', (code) => { clearTimeout(timer); reject(new Error(`the editor exited (${code}): ${stderr}`)); });

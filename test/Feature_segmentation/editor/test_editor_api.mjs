@@ -4,25 +4,77 @@
 // concurrent edits, and a save whose edits.txt replays with --edits to the same labels.
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
+import { request } from 'node:http';
 import { join } from 'node:path';
 import { startEditor, check, summary, program, fandisk, crestLines } from './server.mjs';
 
 const editor = await startEditor();
 const url = editor.url;
+const auth = { 'X-Editor-Token': editor.token };
 async function get(path) {
-  const r = await fetch(url + path);
+  const r = await fetch(url + path, { headers: auth });
   return { status: r.status, body: await r.json() };
 }
 async function post(path, body) {
-  const r = await fetch(url + path, { method: 'POST', headers: { 'Content-Type': 'application/json' },
+  const r = await fetch(url + path, { method: 'POST', headers: { ...auth, 'Content-Type': 'application/json' },
                                       body: typeof body === 'string' ? body : JSON.stringify(body) });
   return { status: r.status, body: await r.json() };
+}
+// A raw request (node:http sets any Host and Transfer-Encoding): { status, body }.
+function rawRequest(method, path, headers, body) {
+  if (body !== undefined && !headers['Transfer-Encoding']) headers = { ...headers, 'Content-Length': Buffer.byteLength(body) };
+  return new Promise((resolve, reject) => {
+    const u = new URL(url + path);
+    const req = request({ host: u.hostname, port: u.port, path: u.pathname + u.search, method, headers }, (res) => {
+      let text = '';
+      res.on('data', (d) => { text += d; });
+      res.on('end', () => resolve({ status: res.statusCode, body: text ? JSON.parse(text) : {} }));
+    });
+    req.on('error', reject);
+    if (body !== undefined) req.write(body);
+    req.end();
+  });
 }
 const state = async () => (await get('api/state')).body;
 const labels = async () => (await get('api/labels')).body;
 
 try {
   check('the server listens on the loopback address by default', url.startsWith('http://127.0.0.1:'), url);
+  check('the printed address carries a session token of 32 hex digits', /^[0-9a-f]{32}$/.test(editor.token), editor.token);
+
+  // ---- only the user's requests: token, Host, Origin, JSON, no chunked bodies
+  const port = new URL(url).port;
+  const noToken = await fetch(url + 'api/state');
+  check('no token: 401', noToken.status === 401, (await noToken.json()).error);
+  const wrong = await fetch(url + 'api/state', { headers: { 'X-Editor-Token': '0'.repeat(32) } });
+  check('a wrong token: 401', wrong.status === 401);
+  const cookie = await fetch(url + 'api/state', { headers: { Cookie: `a=b; fs_editor_token=${editor.token}` } });
+  check('the token as a cookie: 200', cookie.status === 200);
+  const rebound = await rawRequest('GET', 'api/state', { Host: 'attacker.example:' + port, 'X-Editor-Token': editor.token });
+  check('Host attacker.example (DNS rebinding): 403', rebound.status === 403, rebound.body.error);
+  const otherPort = await rawRequest('GET', '', { Host: '127.0.0.1:1' });
+  check('Host of another port, even for the page: 403', otherPort.status === 403);
+  const localhost = await rawRequest('GET', 'api/state', { Host: 'localhost:' + port, 'X-Editor-Token': editor.token });
+  check('Host localhost at the port: 200', localhost.status === 200);
+  const form = await rawRequest('POST', 'api/edit', { 'X-Editor-Token': editor.token, 'Content-Type': 'text/plain' },
+                         JSON.stringify({ op: 'alpha', value: 2 }));
+  check('a text/plain body (a form\'s or a no-cors fetch\'s): 415', form.status === 415, form.body.error);
+  const cross = await rawRequest('POST', 'api/edit', { 'X-Editor-Token': editor.token, 'Content-Type': 'application/json',
+                                               Origin: 'http://attacker.example' }, JSON.stringify({ op: 'alpha', value: 2 }));
+  check('a POST from another Origin: 403', cross.status === 403, cross.body.error);
+  const chunked = await rawRequest('POST', 'api/edit', { 'X-Editor-Token': editor.token, 'Content-Type': 'application/json',
+                                                 'Transfer-Encoding': 'chunked' }, JSON.stringify({ op: 'alpha', value: 2 }));
+  check('a chunked body: 411', chunked.status === 411, chunked.body.error);
+  const page = await fetch(url);
+  check('the page: served without a token, not to be framed',
+        page.status === 200 && page.headers.get('x-frame-options') === 'DENY' &&
+        page.headers.get('x-content-type-options') === 'nosniff');
+  for (const [what, edit] of [['alpha 5e-324 (would not replay)', { op: 'alpha', value: 5e-324 }],
+                              ['alpha 1e308 (an infinite cut cost)', { op: 'alpha', value: 1e308 }],
+                              ['a sketch of 1001 points', { op: 'sketch', points: new Array(1001).fill([0, 0, 0]) }]]) {
+    const r = await post('api/edit', edit);
+    check(`refused with 400: ${what}`, r.status === 400, r.body.error);
+  }
 
   // ---- queries
   const s0 = await state();

@@ -30,7 +30,7 @@ try {
   const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(editor.url);
+  await page.goto(editor.page); // the printed address, with its token
   await page.waitForFunction(() => window.editor && window.editor.ready === true, null, { timeout: 60000 });
   const patches = async () => Number(await page.textContent('#patches'));
   check('the page loads and shows 22 patches', (await patches()) === 22);
