@@ -10,15 +10,21 @@
 
 namespace fs_demo {
 
+// The three forms of the command line, then a blank line.
+inline void print_usage_lines(std::ostream& os)
+{
+  os << "Usage: " << program_name << " [segment] [MESH] [--output-dir DIR] [options]\n"
+     << "       " << program_name << " edit [MESH] [--port N] [--host H] [--output-dir DIR] [options]\n"
+     << "       " << program_name << " batch INPUTS... --output-dir DIR [--jobs N] [--force] [options]\n"
+     << "\n";
+}
+
 // --help: the usage and the options, one line each, to fit a screen.
 inline void print_short_usage(std::ostream& os)
 {
   const CGAL::Feature_segmentation::internal::Segmentation_options library;
-  os << "Usage: " << program_name << " [segment] [MESH] [--output-dir DIR] [options]\n"
-     << "       " << program_name << " edit [MESH] [--port N] [--host H] [--output-dir DIR] [options]\n"
-     << "       " << program_name << " batch INPUTS... --output-dir DIR [--jobs N] [--force] [options]\n"
-     << "\n"
-     << "Segments a triangle mesh (.off, .obj, .ply, .stl; default: fandisk) into patches\n"
+  print_usage_lines(os);
+  os << "Segments a triangle mesh (.off, .obj, .ply, .stl; default: fandisk) into patches\n"
      << "bounded by its creases, ridges and valleys, and writes into DIR: segmentation.ply\n"
      << "(a patch_id and colour per face), face_patches.txt and vertex_patches.txt (in the\n"
      << "file's order), feature_lines.* and boundaries.* (typed polylines), summary.json.\n"
@@ -62,11 +68,8 @@ inline void print_short_usage(std::ostream& os)
 // --help-all: everything.
 inline void print_usage(std::ostream& os)
 {
-  os << "Usage: " << program_name << " [segment] [MESH] [--output-dir DIR] [options]\n"
-     << "       " << program_name << " edit [MESH] [--port N] [--host H] [--output-dir DIR] [options]\n"
-     << "       " << program_name << " batch INPUTS... --output-dir DIR [--jobs N] [--force] [options]\n"
-     << "\n"
-     << "batch: segments every mesh of INPUTS (mesh files; folders, searched recursively\n"
+  print_usage_lines(os);
+  os << "batch: segments every mesh of INPUTS (mesh files; folders, searched recursively\n"
      << "for .off, .obj, .ply and .stl files; list files, .txt, one path per line, '#'\n"
      << "comments) into DIR/NAME/ (NAME: the file's name without extension, made unique),\n"
      << "N meshes at a time (default 1), and writes DIR/batch_summary.csv and\n"

@@ -1,6 +1,6 @@
 // Quality metrics (metrics.h) on hand-computable cases (face labellings and boundary
 // curves) and the reader of the ABC ground truth (yaml-cpp). The quality floors on
-// fandisk and on the ABC model are in test_evaluation_floors.cpp.
+// fandisk and on the ABC model are in test_evaluation_floors.cpp (the same executable).
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
