@@ -64,6 +64,10 @@ public:
       m_solver_seconds(solver_seconds)
   {}
 
+  /// Whether an edit's record counts the patches that hold a face (the program's count,
+  /// a pass over the faces) rather than the segmentation's `number_of_patches()`.
+  bool count_face_patches = false;
+
   /// The edits an `undo` line would take back, and those a `redo` line would make again.
   std::size_t number_of_undoable_edits() const { return m_done.size(); }
   std::size_t number_of_redoable_edits() const { return m_undone.size(); }
@@ -147,7 +151,9 @@ public:
     r.prepare_seconds = std::chrono::duration<double>(prepared - start).count();
     r.seconds = std::chrono::duration<double>(end - prepared).count();
     r.solver_seconds = m_solver_seconds;
-    r.patches = number_of_face_patches(); // after the timing: the program's count, not the edit's cost
+    // the program's count (the patches holding a face) costs a pass over the faces: after
+    // the timing, and only where asked (the editor and Python keep the edit's cost)
+    r.patches = count_face_patches ? number_of_face_patches() : m_segmentation.number_of_patches();
     r.cut_cost = m_segmentation.cut_cost();
     return r;
   }

@@ -8,11 +8,13 @@
 //
 // Requests and answers (all JSON; face indices are triangles of the mesh as GET
 // /api/mesh gives it, which is the order of segmentation.ply):
-//   state      {"patches", "alpha", "cut_cost", "edits": [script lines], "can_undo",
+//   state      {"patches", "alpha", "cut_cost", "edit_count", "edits_from", "edits": [the
+//               script lines of the last 50 edits, from edit edits_from], "can_undo",
 //               "can_redo", "last_edit": {"op", "seconds", "server_seconds"} or null,
 //               "vertices", "triangles", "feature_edges", "crease_edges"}
 //   mesh       {"vertices": [x y z ...], "triangles": [i j k ...], "diagonal"}
 //   labels     {"patches", "face_patches": [...], "vertex_patches": [...]}
+//   history    ?from=K&count=N (N in 1 .. 1000): {"edit_count", "from", "edits": [lines]}
 //   features   {"ridges", "valleys", "user": [[x y z ...] per line], "creases": [x y z x y z
 //               per crease edge ...]}
 //   boundaries {"curves": [[x y z ...] per curve, closed ones repeat their first point],
@@ -67,6 +69,10 @@ namespace internal {
 /// nonzero one: outside, the weights or the cut cost overflow, or the edit script's text
 /// does not read back (a subnormal number).
 constexpr double editor_largest_value = 1e9, editor_smallest_value = 1e-9;
+/// The edits a state carries (the last ones; GET /api/history pages through them all),
+/// and the most a page of the history holds: answers of bounded size however long the
+/// session.
+constexpr std::size_t editor_state_edits = 50, editor_max_history_page = 1000;
 /// The most points a sketch may have (each point is located on the surface and each
 /// segment walked across the mesh: the work of one request stays bounded).
 constexpr std::size_t editor_max_sketch_points = 1000;
@@ -223,6 +229,18 @@ public:
 
   std::size_t number_of_triangles() const { return m_triangles.size(); }
 
+  /// Edits [from, from + count) of the history as edit-script lines, count at most
+  /// editor_max_history_page: {"edit_count", "from", "edits"}.
+  /// \throws Request_error for a count of 0 or over the page size
+  nlohmann::json history(std::size_t from, std::size_t count) const
+  {
+    if(count == 0 || count > internal::editor_max_history_page)
+      throw Request_error("history: 'count' must be in 1 .. " + std::to_string(internal::editor_max_history_page));
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return {{"edit_count", m_history.size()}, {"from", std::min(from, m_history.size())},
+            {"edits", history_lines(from, count)}};
+  }
+
   nlohmann::json state() const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -290,8 +308,7 @@ public:
     faces.reserve(m_triangles.size());
     for(Mesh::Face_index f : m_triangles) faces.push_back(seg.patch(f));
     for(Mesh::Vertex_index v : m.vertices()) vertices.push_back(seg.patch(v));
-    return nlohmann::json{{"patches", m_run->pipeline.number_of_face_patches()}, {"face_patches", faces},
-                          {"vertex_patches", vertices}}
+    return nlohmann::json{{"patches", seg.number_of_patches()}, {"face_patches", faces}, {"vertex_patches", vertices}}
       .dump();
   }
 
@@ -382,6 +399,15 @@ private:
     m_last_server_seconds = r.seconds + r.prepare_seconds;
   }
 
+  // The edit script's lines of the edits [from, from + count) of the history.
+  std::vector<std::string> history_lines(std::size_t from, std::size_t count) const
+  {
+    from = std::min(from, m_history.size());
+    const std::size_t to = from + std::min(count, m_history.size() - from);
+    return edit_script_lines(std::vector<Script_edit>(m_history.begin() + std::ptrdiff_t(from),
+                                                      m_history.begin() + std::ptrdiff_t(to)));
+  }
+
   nlohmann::json state_unlocked() const
   {
     const auto& seg = *m_run->pipeline.segmentation;
@@ -389,10 +415,14 @@ private:
     if(m_last)
       last = {{"op", m_last->verb}, {"seconds", m_last->seconds}, {"prepare_seconds", m_last->prepare_seconds},
               {"server_seconds", m_last_server_seconds}, {"patches", m_last->patches}};
-    return {{"patches", m_run->pipeline.number_of_face_patches()}, // the patches holding a face, as the program counts
+    // the segmentation's count: an edit's answer makes no pass over the faces
+    return {{"patches", seg.number_of_patches()},
             {"alpha", seg.alpha()},
             {"cut_cost", seg.cut_cost()},
-            {"edits", edit_script_lines(m_history)},
+            {"edit_count", m_history.size()},
+            {"edits_from", m_history.size() - std::min(m_history.size(), internal::editor_state_edits)},
+            {"edits", history_lines(m_history.size() - std::min(m_history.size(), internal::editor_state_edits),
+                                    internal::editor_state_edits)},
             {"can_undo", m_run->pipeline.number_of_undoable_edits() > 0},
             {"can_redo", m_run->pipeline.number_of_redoable_edits() > 0},
             {"last_edit", last},

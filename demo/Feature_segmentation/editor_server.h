@@ -3,7 +3,8 @@
 // a local web page. An HTTP server (cpp-httplib) bound to 127.0.0.1 by default serves
 // the page (editor/ in the build: HTML, JavaScript and three.js, nothing fetched at run
 // time) and the JSON interface of editor_api.h:
-//   GET  /api/state, /api/mesh, /api/labels, /api/features, /api/boundaries?smooth=0|1
+//   GET  /api/state, /api/mesh, /api/labels, /api/features, /api/boundaries?smooth=0|1,
+//        /api/history?from=K&count=N
 //   POST /api/edit   one edit (body: JSON), answered with the new state
 //   POST /api/restart  another crest-line scale: {"radius": X, "strength_threshold": T}
 //   POST /api/save   writes the outputs and edits.txt into --output-dir
@@ -240,6 +241,26 @@ inline void configure_editor_server(httplib::Server& server, Editor_session& ses
     if(smooth != "0" && smooth != "1")
       return send_error(res, 400, "boundaries: 'smooth' must be 0 or 1");
     send_json(res, session.boundaries(smooth == "1"));
+  });
+  server.Get("/api/history", [&](const httplib::Request& req, httplib::Response& res) {
+    std::size_t number[2] = {0, 50};
+    const char* names[2] = {"from", "count"};
+    for(int k = 0; k < 2; ++k)
+    {
+      if(!req.has_param(names[k])) continue;
+      const std::string text = req.get_param_value(names[k]);
+      if(text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+        return send_error(res, 400, std::string("history: '") + names[k] + "' must be an integer >= 0");
+      number[k] = std::stoul(text);
+    }
+    try
+    {
+      send_json(res, session.history(number[0], number[1]).dump());
+    }
+    catch(const Request_error& e)
+    {
+      send_error(res, 400, e.what());
+    }
   });
   server.Post("/api/edit", [&](const httplib::Request& req, httplib::Response& res) {
     internal::answer_json_request(req, res, [&](const nlohmann::json& j) { return session.edit(j); });

@@ -495,6 +495,7 @@ inline Results segment_and_write(const Options& options)
   if(!script.edits.empty())
   {
     Edit_runner<Mesh, K>& runner = pipeline.edit_runner();
+    runner.count_face_patches = true; // the summary's and the printed lines' count
     timer.run("edits", [&]() {
       for(const Script_edit& e : script.edits)
       {

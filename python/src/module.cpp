@@ -176,7 +176,7 @@ public:
   {
     const auto& seg = *m_pipeline.segmentation;
     Result r;
-    r.patches = m_pipeline.number_of_face_patches(); // the patches holding a face, as the program counts
+    r.patches = seg.number_of_patches();
     r.cut_cost = seg.cut_cost();
     r.faces = num_faces(m_pipeline.mesh);
     r.vertices = num_vertices(m_pipeline.mesh);
@@ -232,7 +232,7 @@ public:
       }
     }
     m_history.push_back(e);
-    return m_pipeline.number_of_face_patches();
+    return m_pipeline.segmentation->number_of_patches();
   }
 
   std::vector<std::string> edits() const { return edit_script_lines(m_history); }

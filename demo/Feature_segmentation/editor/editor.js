@@ -178,7 +178,7 @@ function showState(s) {
   if (state.startRadius === undefined) state.startRadius = s.radius;
   $('undo').disabled = !s.can_undo;
   $('redo').disabled = !s.can_redo;
-  $('edit-count').textContent = s.edits.length;
+  $('edit-count').textContent = s.edit_count; // the list holds the last ones (the state's edits)
   const list = $('edits');
   list.replaceChildren(...s.edits.map((line) => {
     const li = document.createElement('li');

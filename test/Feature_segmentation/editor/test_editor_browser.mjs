@@ -2,7 +2,7 @@
 // The editor's page in a real browser: Debian's Chromium, headless, driven by
 // playwright-core (from npm, pinned by the editor's package-lock.json). Loads the page on
 // fandisk, checks that the canvas draws the mesh, moves the alpha slider and sees the
-// patch count change (22 -> 27, as the program gives at alpha 1), merges two patches
+// patch count change (22 -> 28 at alpha 1), merges two patches
 // with a Ctrl-drag stroke and sees the count drop, undoes, and saves a screenshot for
 // the manual (FS_EDITOR_SCREENSHOT, default: the build folder). Exits 77 (skipped, with
 // a message) only where no browser exists.
@@ -56,8 +56,8 @@ try {
 
   // alpha slider to 1.0
   await page.$eval('#alpha', (el) => { el.value = '1'; el.dispatchEvent(new Event('change')); });
-  await page.waitForFunction(() => document.querySelector('#patches').textContent === '27', null, { timeout: 30000 });
-  check('moving the alpha slider to 1 gives 27 patches', (await patches()) === 27);
+  await page.waitForFunction(() => document.querySelector('#patches').textContent === '28', null, { timeout: 30000 });
+  check('moving the alpha slider to 1 gives 28 patches', (await patches()) === 28);
   const lastEdit = await page.textContent('#last-edit');
   check('the time of the last edit is shown', /^alpha: [0-9.]+ ms$/.test(lastEdit), lastEdit);
 
@@ -71,17 +71,17 @@ try {
   for (let i = 1; i <= 30; ++i) await page.mouse.move(...at(i / 30));
   await page.mouse.up();
   await page.keyboard.up('Control');
-  await page.waitForFunction(() => document.querySelector('#patches').textContent !== '27', null, { timeout: 30000 });
+  await page.waitForFunction(() => document.querySelector('#patches').textContent !== '28', null, { timeout: 30000 });
   const merged = await patches();
-  check('a Ctrl-drag stroke merges patches', merged < 27, `${merged} patches`);
+  check('a Ctrl-drag stroke merges patches', merged < 28, `${merged} patches`);
   const state = await page.evaluate(() => window.editor.current);
   check('the stroke arrived as one merge edit', state.edits[state.edits.length - 1].startsWith('merge triangles '));
 
   // undo with the button
   await page.click('#undo');
-  await page.waitForFunction(() => document.querySelector('#patches').textContent === '27', null, { timeout: 30000 });
+  await page.waitForFunction(() => document.querySelector('#patches').textContent === '28', null, { timeout: 30000 });
   await page.waitForFunction(() => window.editor.inflight === 0, null, { timeout: 30000 });
-  check('undo gives the 27 patches back', (await patches()) === 27);
+  check('undo gives the 28 patches back', (await patches()) === 28);
 
   // Shift-drag paints a region; Refine sends it as a local edit
   await page.keyboard.down('Shift');
