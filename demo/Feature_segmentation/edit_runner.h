@@ -49,6 +49,23 @@ struct Edit_record
 ///
 /// \tparam Mesh a `CGAL::Surface_mesh` (or another FaceListGraph with an internal point map)
 /// \tparam Kernel its kernel
+/// The number of patches of `segmentation` that hold a face of `mesh` (its face_patches();
+/// a patch of the vertex labels may win no face's majority): the program's patch count.
+template <typename Mesh, typename Segmentation>
+std::size_t number_of_face_patches(const Mesh& mesh, const Segmentation& segmentation)
+{
+  auto face_patch = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  segmentation.face_patches(face_patch);
+  std::vector<char> seen(segmentation.number_of_patches(), 0);
+  std::size_t n = 0;
+  for(auto f : faces(mesh))
+  {
+    const std::size_t p = get(face_patch, f);
+    if(p < seen.size() && !seen[p]) { seen[p] = 1; ++n; }
+  }
+  return n;
+}
+
 template <typename Mesh, typename Kernel>
 class Edit_runner
 {
@@ -153,25 +170,9 @@ public:
     r.solver_seconds = m_solver_seconds;
     // the program's count (the patches holding a face) costs a pass over the faces: after
     // the timing, and only where asked (the editor and Python keep the edit's cost)
-    r.patches = count_face_patches ? number_of_face_patches() : m_segmentation.number_of_patches();
+    r.patches = count_face_patches ? number_of_face_patches(m_mesh, m_segmentation) : m_segmentation.number_of_patches();
     r.cut_cost = m_segmentation.cut_cost();
     return r;
-  }
-
-  /// The number of patches that hold a face (face_patches(); a patch of the vertex
-  /// labels may win no face's majority), as the program counts patches.
-  std::size_t number_of_face_patches() const
-  {
-    auto face_patch = get(CGAL::dynamic_face_property_t<std::size_t>(), m_mesh);
-    m_segmentation.face_patches(face_patch);
-    std::vector<char> seen(m_segmentation.number_of_patches(), 0);
-    std::size_t n = 0;
-    for(face_descriptor f : faces(m_mesh))
-    {
-      const std::size_t p = get(face_patch, f);
-      if(p < seen.size() && !seen[p]) { seen[p] = 1; ++n; }
-    }
-    return n;
   }
 
 private:

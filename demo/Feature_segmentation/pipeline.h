@@ -298,15 +298,7 @@ public:
   }
 
   /// The number of patches of the current segmentation that hold a face (face_patches()).
-  std::size_t number_of_face_patches() const
-  {
-    auto face_patch = get(CGAL::dynamic_face_property_t<long>(), mesh);
-    segmentation->face_patches(face_patch);
-    std::vector<long> ids;
-    ids.reserve(num_faces(mesh));
-    for(Mesh::Face_index f : faces(mesh)) ids.push_back(get(face_patch, f));
-    return number_of_distinct_ids(ids);
-  }
+  std::size_t number_of_face_patches() const { return fs_demo::number_of_face_patches(mesh, *segmentation); }
 
   /// The points of a boundary curve; a closed one repeats its first.
   static std::vector<double> curve_coordinates(const FS::Boundary_curve<Mesh>& c)
