@@ -298,8 +298,8 @@ private:
     // A neighbourhood of many rings (a fine mesh) is thinned to max_fit_points: the
     // first ring whole, the rest evenly in breadth-first order (so every ring keeps its
     // share). A cubic has 7 coefficients; 32 points give up to 96 equations, and the
-    // fit costs what three rings cost (fandisk at 828k faces: 20 patches with and
-    // without thinning, the curvature stage 2.6 s instead of 4.7 s).
+    // fit costs what three rings cost, with the same patches (the manual's
+    // Performance section measures it).
     if(out.size() > max_fit_points)
     {
       const std::size_t first_ring = std::min(out.size(), m_adj_begin[v + 1] - m_adj_begin[v]);
