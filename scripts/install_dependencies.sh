@@ -15,7 +15,7 @@ packages=(
   doxygen
   ccache
   clang libclang-rt-14-dev   # libFuzzer and the sanitizers (fuzz targets in the test command)
-  nlohmann-json3-dev libcpp-httplib-dev   # the editor's server (feature_segmentation edit)
+  nlohmann-json3-dev   # the editor's server (feature_segmentation edit, on Boost.Beast)
   nodejs           # npm ci puts three.js (the editor's page) and playwright-core into the build
   chromium         # the editor's browser test (headless)
   python3-dev pybind11-dev python3-numpy python3-pytest   # the Python module and its tests

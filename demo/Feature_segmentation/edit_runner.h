@@ -94,6 +94,8 @@ public:
   Edit_record apply(const Edit_script& script, const Script_edit& e)
   {
     typedef std::chrono::steady_clock Clock;
+    if(const std::string refusal = edit_refusal(e); !refusal.empty())
+      throw Edit_script_error(internal::script_place(script.path, e.line) + refusal);
     Edit_record r;
     r.line = e.line;
     r.verb = e.verb;

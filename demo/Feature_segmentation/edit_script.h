@@ -85,6 +85,47 @@ struct Edit_script
 /// The sketch alpha when a `sketch` line gives none (the library's default).
 constexpr double default_sketch_alpha = 2.0;
 
+/// The largest magnitude of an edit's value (alpha, amount, factor, sketch alpha), and the
+/// smallest of a nonzero one: outside, the weights or the cut cost overflow, or the edit's
+/// text does not read back (a subnormal number).
+constexpr double edit_largest_value = 1e9, edit_smallest_value = 1e-9;
+/// The most points a sketch may have (each is located on the surface and each segment
+/// walked across the mesh: the work of one edit stays bounded).
+constexpr std::size_t edit_max_sketch_points = 1000;
+
+/// Why `e` is refused, or "" if it is accepted: the one check of every edit, from an edit
+/// script, the editor or Python, so that every accepted edit replays from its script line.
+/// A value (alpha, refine's and coarsen's amount, scale's factor, sketch's alpha) is 0 or
+/// of magnitude in [edit_smallest_value, edit_largest_value]; a scale factor is >= 0; a
+/// sketch has alpha > 1 and 2 to edit_max_sketch_points points of finite coordinates.
+inline std::string edit_refusal(const Script_edit& e)
+{
+  const auto number = [](double x) {
+    std::ostringstream text;
+    text << x;
+    return text.str();
+  };
+  const bool valued = e.verb == "alpha" || e.verb == "refine" || e.verb == "coarsen" || e.verb == "scale" ||
+                      e.verb == "sketch";
+  if(valued && (!std::isfinite(e.value) || std::abs(e.value) > edit_largest_value ||
+                (e.value != 0 && std::abs(e.value) < edit_smallest_value)))
+    return e.verb + ": the value must be 0 or of magnitude between 1e-9 and 1e9 (got " + number(e.value) + ")";
+  if(e.verb == "scale" && e.value < 0)
+    return "scale: the factor must be >= 0 (got " + number(e.value) + ")";
+  if(e.verb == "sketch")
+  {
+    if(!(e.value > 1))
+      return "sketch: alpha must be > 1 (got " + number(e.value) + ")";
+    if(e.points.size() < 2 || e.points.size() > edit_max_sketch_points)
+      return "sketch: 2 to " + std::to_string(edit_max_sketch_points) + " points (got " +
+             std::to_string(e.points.size()) + ")";
+    for(const auto& p : e.points)
+      if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        return "sketch: the points' coordinates must be finite";
+  }
+  return {};
+}
+
 namespace internal {
 
 inline std::string script_place(const std::string& path, std::size_t line)
@@ -215,8 +256,6 @@ inline Edit_script read_edit_script(std::istream& in, const std::string& path)
       e.value = internal::script_number(t[n - 1], where, e.verb);
       if(e.verb == "coarsen")
         e.value = -e.value;
-      if(e.verb == "scale" && e.value < 0)
-        throw Edit_script_error(where + "scale: the factor must be >= 0 (got " + t[n - 1] + ")");
     }
     else if(e.verb == "merge")
     {
@@ -231,8 +270,6 @@ inline Edit_script read_edit_script(std::istream& in, const std::string& path)
       {
         arity(n >= 3, "sketch [alpha A] X Y Z X Y Z ...");
         e.value = internal::script_number(t[2], where, "sketch alpha");
-        if(!(e.value > 1))
-          throw Edit_script_error(where + "sketch: alpha must be > 1 (got " + t[2] + ")");
         first = 3;
       }
       const std::size_t numbers = n - first;
@@ -259,6 +296,8 @@ inline Edit_script read_edit_script(std::istream& in, const std::string& path)
     else
       throw Edit_script_error(where + "unknown verb '" + e.verb +
                               "' (expected alpha, refine, coarsen, scale, merge, sketch, undo or redo)");
+    if(const std::string refusal = edit_refusal(e); !refusal.empty())
+      throw Edit_script_error(where + refusal);
     if(e.verb == "undo") { --undoable; ++redoable; }
     else if(e.verb == "redo") { ++undoable; --redoable; }
     else { ++undoable; redoable = 0; }

@@ -46,6 +46,7 @@
 #include <memory>
 #include <cmath>
 #include <filesystem>
+#include <algorithm>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -65,20 +66,25 @@ public:
 
 namespace internal {
 
-/// The largest magnitude of an edit's value (alpha, amount, factor), and the smallest of a
-/// nonzero one: outside, the weights or the cut cost overflow, or the edit script's text
-/// does not read back (a subnormal number).
-constexpr double editor_largest_value = 1e9, editor_smallest_value = 1e-9;
 /// The edits a state carries (the last ones; GET /api/history pages through them all),
 /// and the most a page of the history holds: answers of bounded size however long the
 /// session.
 constexpr std::size_t editor_state_edits = 50, editor_max_history_page = 1000;
-/// The most points a sketch may have (each point is located on the surface and each
-/// segment walked across the mesh: the work of one request stays bounded).
-constexpr std::size_t editor_max_sketch_points = 1000;
+/// The longest edit line a state carries: a longer one (a region of many faces) is cut
+/// after its first words and ends with " ... (N more)"; GET /api/history gives it whole.
+constexpr std::size_t editor_state_line_chars = 200;
 
-// An edit's value: finite, 0 or of magnitude in [editor_smallest_value, editor_largest_value].
-inline double json_edit_value(const nlohmann::json& j, const char* key, const std::string& op);
+inline std::vector<std::string> abbreviated(std::vector<std::string> lines)
+{
+  for(std::string& line : lines)
+  {
+    if(line.size() <= editor_state_line_chars) continue;
+    const std::size_t cut = line.rfind(' ', editor_state_line_chars - 40);
+    const std::size_t rest = static_cast<std::size_t>(std::count(line.begin() + std::ptrdiff_t(cut), line.end(), ' '));
+    line = line.substr(0, cut) + " ... (" + std::to_string(rest) + " more)";
+  }
+  return lines;
+}
 
 inline double json_finite(const nlohmann::json& j, const char* key, const std::string& op)
 {
@@ -90,15 +96,6 @@ inline double json_finite(const nlohmann::json& j, const char* key, const std::s
   const double x = it->get<double>();
   if(!std::isfinite(x))
     throw Request_error(op + ": '" + key + "' must be a finite number");
-  return x;
-}
-
-inline double json_edit_value(const nlohmann::json& j, const char* key, const std::string& op)
-{
-  const double x = json_finite(j, key, op);
-  if(std::abs(x) > editor_largest_value || (x != 0 && std::abs(x) < editor_smallest_value))
-    throw Request_error(op + ": '" + key + "' must be 0 or of magnitude between 1e-9 and 1e9 (got " +
-                        j.find(key)->dump() + ")");
   return x;
 }
 
@@ -155,7 +152,7 @@ inline Script_edit script_edit_from_json(const nlohmann::json& j, std::size_t nu
   if(op == "alpha")
   {
     internal::json_keys(j, op, {"value"});
-    e.value = internal::json_edit_value(j, "value", op);
+    e.value = internal::json_finite(j, "value", op);
   }
   else if(op == "refine" || op == "coarsen" || op == "scale")
   {
@@ -163,9 +160,7 @@ inline Script_edit script_edit_from_json(const nlohmann::json& j, std::size_t nu
     internal::json_keys(j, op, {"faces", key});
     e.region.kind = Script_region::TRIANGLES;
     e.region.faces = internal::json_faces(j, op, number_of_triangles);
-    e.value = internal::json_edit_value(j, key, op);
-    if(op == "scale" && e.value < 0)
-      throw Request_error("scale: 'factor' must be >= 0");
+    e.value = internal::json_finite(j, key, op);
     if(op == "coarsen")
       e.value = -e.value;
   }
@@ -178,15 +173,13 @@ inline Script_edit script_edit_from_json(const nlohmann::json& j, std::size_t nu
   else if(op == "sketch")
   {
     internal::json_keys(j, op, {"points", "alpha"});
-    e.value = j.contains("alpha") ? internal::json_edit_value(j, "alpha", op) : default_sketch_alpha;
-    if(!(e.value > 1))
-      throw Request_error("sketch: 'alpha' must be > 1");
+    e.value = j.contains("alpha") ? internal::json_finite(j, "alpha", op) : default_sketch_alpha;
     const auto it = j.find("points");
     if(it == j.end() || !it->is_array() || it->size() < 2)
       throw Request_error("sketch: 'points' must be an array of at least two [x, y, z] points");
-    if(it->size() > internal::editor_max_sketch_points)
-      throw Request_error("sketch: at most " + std::to_string(internal::editor_max_sketch_points) + " points (got " +
-                          std::to_string(it->size()) + ")");
+    if(it->size() > edit_max_sketch_points)
+      throw Request_error("sketch: 2 to " + std::to_string(edit_max_sketch_points) + " points (got " +
+                          std::to_string(it->size()) + ")"); // before reading them
     for(const nlohmann::json& p : *it)
     {
       if(!p.is_array() || p.size() != 3)
@@ -421,8 +414,8 @@ private:
             {"cut_cost", seg.cut_cost()},
             {"edit_count", m_history.size()},
             {"edits_from", m_history.size() - std::min(m_history.size(), internal::editor_state_edits)},
-            {"edits", history_lines(m_history.size() - std::min(m_history.size(), internal::editor_state_edits),
-                                    internal::editor_state_edits)},
+            {"edits", internal::abbreviated(history_lines(m_history.size() - std::min(m_history.size(), internal::editor_state_edits),
+                                                          internal::editor_state_edits))},
             {"can_undo", m_run->pipeline.number_of_undoable_edits() > 0},
             {"can_redo", m_run->pipeline.number_of_redoable_edits() > 0},
             {"last_edit", last},

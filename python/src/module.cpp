@@ -392,7 +392,6 @@ face_patches(), follow the rows of `faces`.)doc")
     .def("coarsen", [](Session& s, const py::handle& f, double d) { return s.edit(region_edit("coarsen", f, -d)); },
          py::arg("faces"), py::arg("amount"), "subtract `amount` from alpha_e on the feature edges of `faces`")
     .def("scale", [](Session& s, const py::handle& f, double x) {
-           if(!(x >= 0)) throw py::value_error("scale: the factor must be >= 0");
            return s.edit(region_edit("scale", f, x));
          }, py::arg("faces"), py::arg("factor"), "multiply alpha_e on the feature edges of `faces` by `factor` >= 0")
     .def("merge", [](Session& s, const py::handle& f) { return s.edit(region_edit("merge", f, 0)); }, py::arg("faces"),
@@ -401,16 +400,12 @@ face_patches(), follow the rows of `faces`.)doc")
            const auto p = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(points);
            if(!p || p.ndim() != 2 || p.shape(1) != 3 || p.shape(0) < 2)
              throw py::value_error("sketch: points must be a (k, 3) array, k >= 2");
-           if(!(alpha > 1)) throw py::value_error("sketch: alpha must be > 1");
            Script_edit e;
            e.verb = "sketch";
            e.value = alpha;
            for(py::ssize_t i = 0; i < p.shape(0); ++i)
            {
-             std::array<double, 3> q{p.at(i, 0), p.at(i, 1), p.at(i, 2)};
-             if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-               throw py::value_error("sketch: points must be finite");
-             e.points.push_back(q);
+             e.points.push_back({p.at(i, 0), p.at(i, 1), p.at(i, 2)});
            }
            return s.edit(e);
          }, py::arg("points"), py::arg("alpha") = default_sketch_alpha,

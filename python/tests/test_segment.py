@@ -173,6 +173,18 @@ def test_sketch_adds_feature_edges(fandisk):
         seg.sketch(np.array([v[0], v[1]]), alpha=1.0)
     with pytest.raises(ValueError, match="\\(k, 3\\) array, k >= 2"):
         seg.sketch(np.array([v[0]]))
+    with pytest.raises(ValueError, match="2 to 1000 points \\(got 1001\\)"):
+        seg.sketch(np.zeros((1001, 3)))
+
+
+@pytest.mark.parametrize("alpha", [5e-324, 1e308, -2e9])
+def test_an_edit_that_would_not_replay_is_refused(fandisk, alpha):
+    """The edit script's, the editor's and Python's edits meet one check: a subnormal alpha
+    does not read back from its script line, and 1e308 makes the cut cost infinite."""
+    seg = fs.Segmentation(*fandisk)
+    with pytest.raises(ValueError, match="^alpha: the value must be 0 or of magnitude between 1e-9 and 1e9"):
+        seg.set_alpha(alpha)
+    assert seg.edits == []
 
 
 def test_boundaries_feature_lines_and_creases(fandisk):

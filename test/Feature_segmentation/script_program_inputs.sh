@@ -127,6 +127,8 @@ printf 'merge sphere 0 0 0 1\n' > "$bad/region.edits"
 printf 'scale faces 1 2 -1.5\n' > "$bad/factor.edits"
 printf 'sketch 0 0 0 1 1\n' > "$bad/sketch_arity.edits"
 printf 'sketch alpha 1 0 0 0 1 1 1\n' > "$bad/sketch_alpha.edits"
+printf 'alpha 1e308\n' > "$bad/huge_alpha.edits"     # an infinite cut cost
+printf 'refine faces 1 2 1e-12\n' > "$bad/tiny_amount.edits"
 printf 'alpha 1\nundo\nundo # one too many\n' > "$bad/undo.edits"
 printf 'alpha 1\nundo\nalpha 0.8\nredo # forgotten by the edit before\n' > "$bad/redo.edits"
 printf 'merge triangles 0 12946\n' > "$bad/triangle_range.edits"
@@ -206,6 +208,8 @@ expect_error edits_region           1 "region\.edits:1: merge: expected a region
 expect_error edits_factor           1 'factor\.edits:1: scale: the factor must be >= 0' "$fandisk" --edits "$bad/factor.edits"
 expect_error edits_sketch_arity     1 'sketch_arity\.edits:1: sketch: expected at least two points' "$fandisk" --edits "$bad/sketch_arity.edits"
 expect_error edits_sketch_alpha     1 'sketch_alpha\.edits:1: sketch: alpha must be > 1' "$fandisk" --edits "$bad/sketch_alpha.edits"
+expect_error edits_huge_alpha       1 'huge_alpha\.edits:1: alpha: the value must be 0 or of magnitude between 1e-9 and 1e9 \(got 1e\+308\)' "$fandisk" --edits "$bad/huge_alpha.edits"
+expect_error edits_tiny_amount      1 'tiny_amount\.edits:1: refine: the value must be 0 or of magnitude between 1e-9 and 1e9' "$fandisk" --edits "$bad/tiny_amount.edits"
 expect_error edits_undo             1 'undo\.edits:3: undo: no edit to undo' "$fandisk" --edits "$bad/undo.edits"
 expect_error edits_no_value         2 '--edits expects a value'     "$fandisk" --edits
 expect_error watershed_unknown      2 "--watershed must be anisotropic or geodesic \(got 'foo'\)" "$fandisk" --watershed foo

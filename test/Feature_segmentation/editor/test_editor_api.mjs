@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The editor's HTTP interface on fandisk (12,946 triangles) with its crest lines:
 // every verb, each kind of bad request (answered 400/413 with the state unchanged),
-// concurrent edits, and a save whose edits.txt replays with --edits to the same labels.
+// concurrent edits, a save whose edits.txt replays with --edits to the same labels, and
+// the attacks the server withstands: foreign Host and Origin, no token, a form's
+// text/plain body, a chunked body of 1 GB, 200 slow clients, malformed HTTP.
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { request } from 'node:http';
+import { connect } from 'node:net';
 import { join } from 'node:path';
 import { startEditor, check, summary, program, fandisk, crestLines } from './server.mjs';
 
@@ -35,6 +38,41 @@ function rawRequest(method, path, headers, body) {
     req.end();
   });
 }
+// Writes `text` on a new connection and resolves to what the server answers before it closes.
+function rawExchange(text) {
+  return new Promise((resolve) => {
+    const socket = connect(Number(new URL(url).port), '127.0.0.1');
+    let answer = '';
+    socket.on('data', (d) => { answer += d; });
+    socket.on('error', () => {});
+    socket.on('close', () => resolve(answer));
+    socket.write(text);
+  });
+}
+// The resident memory of the editor's process, in bytes.
+const residentBytes = () => Number(readFileSync(`/proc/${editor.child.pid}/status`, 'utf8').match(/VmRSS:\s+(\d+)/)[1]) * 1024;
+// A POST of 1 GiB of chunked body in 1 MiB chunks, sent until the server answers or closes:
+// { status (or 'closed'), mib: the chunks written }.
+function hugeChunkedPost() {
+  return new Promise((resolve) => {
+    const u = new URL(url);
+    const req = request({ host: u.hostname, port: u.port, path: '/api/edit', method: 'POST',
+                          headers: { ...auth, 'Content-Type': 'application/json', 'Transfer-Encoding': 'chunked' } });
+    const chunk = Buffer.alloc(1 << 20, 0x20);
+    let mib = 0, done = false;
+    const finish = (status) => { if (!done) { done = true; req.destroy(); resolve({ status, mib }); } };
+    req.on('response', (res) => finish(res.statusCode));
+    req.on('error', () => finish('closed'));
+    const pump = () => {
+      while (!done && mib < 1024) {
+        ++mib;
+        if (!req.write(chunk)) { req.once('drain', pump); return; }
+      }
+      if (!done) req.end();
+    };
+    pump();
+  });
+}
 const state = async () => (await get('api/state')).body;
 const labels = async () => (await get('api/labels')).body;
 
@@ -63,8 +101,48 @@ try {
                                                Origin: 'http://attacker.example' }, JSON.stringify({ op: 'alpha', value: 2 }));
   check('a POST from another Origin: 403', cross.status === 403, cross.body.error);
   const chunked = await rawRequest('POST', 'api/edit', { 'X-Editor-Token': editor.token, 'Content-Type': 'application/json',
-                                                 'Transfer-Encoding': 'chunked' }, JSON.stringify({ op: 'alpha', value: 2 }));
-  check('a chunked body: 411', chunked.status === 411, chunked.body.error);
+                                                 'Transfer-Encoding': 'chunked' }, JSON.stringify({ op: 'explode' }));
+  check('a small chunked body is read: its edit is judged (400, unknown op)',
+        chunked.status === 400 && /unknown op/.test(chunked.body.error), chunked.body.error);
+  const rss0 = residentBytes();
+  const gib = await hugeChunkedPost();
+  const grown = residentBytes() - rss0;
+  check('a chunked body of 1 GiB: refused (413 or closed) long before its end, memory within 100 MB',
+        (gib.status === 413 || gib.status === 'closed') && gib.mib < 1024 && grown < 100e6,
+        `${gib.status} after ${gib.mib} MiB sent, ${(grown / 1e6).toFixed(1)} MB more resident`);
+  const garbage = await rawExchange('HELLO?\r\n\r\n');
+  check('malformed HTTP: 400 naming the fault', /^HTTP\/1\.1 400/.test(garbage) && garbage.includes('malformed HTTP'),
+        garbage.split('\r\n')[0]);
+  const bigHeaders = await rawExchange(`GET /api/state HTTP/1.1\r\nHost: 127.0.0.1:${port}\r\nX-Pad: ${'a'.repeat(20000)}\r\n\r\n`);
+  check('headers over 16 KB: 431', /^HTTP\/1\.1 431/.test(bigHeaders), bigHeaders.split('\r\n')[0]);
+  const badUtf8 = await rawRequest('POST', 'api/edit', { 'X-Editor-Token': editor.token, 'Content-Type': 'application/json' },
+                                   Buffer.from([0x7b, 0x22, 0x6f, 0x70, 0x22, 0x3a, 0x22, 0xff, 0xfe, 0x22, 0x7d])); // {"op":"\xff\xfe"}
+  check('invalid UTF-8 in a body: 400', badUtf8.status === 400, badUtf8.body.error);
+  const wrongVerb = await rawRequest('GET', 'api/edit', { 'X-Editor-Token': editor.token });
+  check('GET of a POST resource: 405', wrongVerb.status === 405, wrongVerb.body.error);
+
+  // ---- 200 slow clients, each sending a header byte every 0.2 s, do not hold up the others
+  const slowText = `GET /api/state HTTP/1.1\r\nHost: 127.0.0.1:${port}\r\nX-Slow: ` + 'a'.repeat(200);
+  const slow = [];
+  for (let i = 0; i < 200; ++i) {
+    const socket = connect(Number(port), '127.0.0.1');
+    socket.on('error', () => {});
+    socket.closedAt = null;
+    socket.on('close', () => { socket.closedAt = performance.now(); });
+    slow.push(socket);
+  }
+  let dripped = 0;
+  const drip = setInterval(() => {
+    for (const socket of slow) if (!socket.destroyed) socket.write(slowText[dripped % slowText.length]);
+    ++dripped;
+  }, 200);
+  const slowStart = performance.now();
+  await new Promise((r) => setTimeout(r, 1500));
+  const asked = performance.now();
+  const during = await get('api/state');
+  const waited = performance.now() - asked;
+  check('200 slow clients: a normal request is answered within 1 s', during.status === 200 && waited < 1000,
+        `${waited.toFixed(0)} ms`);
   const page = await fetch(url);
   check('the page: served without a token, not to be framed',
         page.status === 200 && page.headers.get('x-frame-options') === 'DENY' &&
@@ -147,6 +225,10 @@ try {
   check('refine everywhere: at least as many patches', r.status === 200 && r.body.patches >= m.body.patches, r.body.patches);
   const c = await post('api/edit', { op: 'coarsen', faces: [...Array(12946).keys()], amount: 0.3 });
   check('coarsen by the same amount: back to the patches of the merge', c.body.patches === m.body.patches, c.body.patches);
+  const answerBytes = JSON.stringify(c.body).length, fullLine = (await get(`api/history?from=${c.body.edit_count - 1}&count=1`)).body.edits[0];
+  check('two edits of every triangle: the answer stays small (its lines cut), the history has them whole',
+        answerBytes < 10000 && /^coarsen triangles 0 1 2 .* \.\.\. \(\d+ more\)$/.test(c.body.edits[c.body.edits.length - 1]) &&
+        fullLine.split(' ').length === 12946 + 3, `${answerBytes} bytes`);
   const lc = await labels();
   const sc = await post('api/edit', { op: 'scale', faces: [...Array(12946).keys()], factor: 0 });
   check('scale by 0 everywhere: no feature reward left, fewer patches', sc.body.patches < c.body.patches, sc.body.patches);
@@ -234,6 +316,14 @@ try {
     const r = await get('api/history?' + q);
     check(`history?${q}: 400`, r.status === 400, r.body.error);
   }
+  // the slow clients' headers did not arrive within 10 s: the server closed them
+  while (slow.some((x) => x.closedAt === null) && performance.now() - slowStart < 20000)
+    await new Promise((r) => setTimeout(r, 200));
+  clearInterval(drip);
+  const closed = slow.filter((x) => x.closedAt !== null);
+  const latest = Math.max(...closed.map((x) => x.closedAt - slowStart));
+  check('the slow clients are closed once their 10 s for the headers are over',
+        closed.length === 200 && latest >= 9000 && latest < 15000, `${closed.length} closed, the last at ${(latest / 1000).toFixed(1)} s`);
 } finally {
   editor.stop();
 }

@@ -3,10 +3,13 @@
 // playwright-core (from npm, pinned by the editor's package-lock.json). Loads the page on
 // fandisk, checks that the canvas draws the mesh, moves the alpha slider and sees the
 // patch count change (22 -> 28 at alpha 1), merges two patches
-// with a Ctrl-drag stroke and sees the count drop, undoes, and saves a screenshot for
+// with a Ctrl-drag stroke and sees the count drop, undoes; a page of another origin, open
+// in the same browser (so with the editor's cookie), tries to read and drive the editor
+// (a fetch, a no-cors fetch, a form) and cannot; then it saves a screenshot for
 // the manual (FS_EDITOR_SCREENSHOT, default: the build folder). Exits 77 (skipped, with
 // a message) only where no browser exists.
 import { existsSync } from 'node:fs';
+import { createServer } from 'node:http';
 import { createRequire } from 'node:module';
 import { join } from 'node:path';
 import { startEditor, check, summary } from './server.mjs';
@@ -27,12 +30,51 @@ const browser = await chromium.launch({
   args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
 });
 try {
-  const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
+  const context = await browser.newContext({ viewport: { width: 1100, height: 700 } });
+  const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
   await page.goto(editor.page); // the printed address, with its token
   await page.waitForFunction(() => window.editor && window.editor.ready === true, null, { timeout: 60000 });
   const patches = async () => Number(await page.textContent('#patches'));
+
+  // ---- a page of another origin (same host, another port: the editor's cookie goes along)
+  const editCount = async () => (await (await fetch(editor.url + 'api/state', { headers: { 'X-Editor-Token': editor.token } })).json()).edit_count;
+  const countBefore = await editCount();
+  const attack = `<!doctype html><iframe name="sink"></iframe>
+    <form id="f" method="POST" action="${editor.url}api/edit" enctype="text/plain" target="sink">
+      <input name='{"op":"alpha","value":2,"x":"' value='"}'></form>
+    <script>
+      window.results = {};
+      const api = ${JSON.stringify(editor.url)} + 'api/';
+      const body = JSON.stringify({ op: 'alpha', value: 3 });
+      (async () => {
+        try { await (await fetch(api + 'state', { credentials: 'include' })).json(); window.results.read = 'read'; }
+        catch (e) { window.results.read = 'blocked'; }
+        try { await fetch(api + 'edit', { method: 'POST', credentials: 'include', headers: { 'Content-Type': 'application/json' }, body });
+              window.results.json = 'sent'; }
+        catch (e) { window.results.json = 'blocked'; }
+        try { await fetch(api + 'edit', { method: 'POST', mode: 'no-cors', credentials: 'include', headers: { 'Content-Type': 'text/plain' }, body });
+              window.results.noCors = 'sent'; }
+        catch (e) { window.results.noCors = 'blocked'; }
+        document.getElementById('f').submit();
+        window.results.form = 'submitted';
+      })();
+    </script>`;
+  const attacker = createServer((req, res) => { res.writeHead(200, { 'Content-Type': 'text/html' }); res.end(attack); });
+  await new Promise((r) => attacker.listen(0, '127.0.0.1', r));
+  const evil = await context.newPage();
+  await evil.goto(`http://127.0.0.1:${attacker.address().port}/`);
+  await evil.waitForFunction(() => window.results && window.results.form === 'submitted', null, { timeout: 30000 });
+  await evil.waitForTimeout(1500); // the form's request
+  const results = await evil.evaluate(() => window.results);
+  check('a page of another origin cannot read the state', results.read === 'blocked', JSON.stringify(results));
+  check('its JSON fetch is stopped by the refused preflight', results.json === 'blocked');
+  check('its no-cors fetch and its text/plain form change nothing', (await editCount()) === countBefore,
+        `${countBefore} edits before, ${await editCount()} after`);
+  await evil.close();
+  attacker.close();
+
   check('the page loads and shows 22 patches', (await patches()) === 22);
 
   // the canvas draws the mesh: many non-white pixels in many colours
@@ -95,7 +137,8 @@ try {
   await page.click('#refine');
   await page.waitForFunction(() => window.editor.current.edits.length === 4 && window.editor.inflight === 0, null,
                              { timeout: 30000 });
-  const refined = await page.evaluate(() => window.editor.current.edits[3]);
+  const refined = (await (await fetch(editor.url + 'api/history?from=3&count=1',
+                                      { headers: { 'X-Editor-Token': editor.token } })).json()).edits[0];
   check('Refine sends the painted faces as a local refinement', refined.startsWith('refine triangles ') &&
         refined.split(' ').length === painted + 3, refined.slice(0, 40) + '...');
   check('no script error on the page', errors.length === 0, errors.join('; '));
