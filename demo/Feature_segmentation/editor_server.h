@@ -10,7 +10,7 @@
 //   POST /api/restart  another crest-line scale: {"radius": X, "strength_threshold": T}
 //   POST /api/save   writes the outputs and edits.txt into --output-dir
 // A refused request gets a 4xx status and {"error": "..."} naming the fault (400 a bad
-// request, 401 the token, 403 Host or Origin, 413 a body over 8 MB, chunked or not, 415
+// request, 403 the token, Host or Origin, 413 a body over 8 MB, chunked or not, 415
 // the content type, 431 headers over 16 KB); an unexpected failure 500; the state never
 // changes on an error.
 // Only the user can drive it: every request must name this server in its Host header
@@ -277,7 +277,7 @@ inline std::optional<Http_answer> refuse_by_headers(const http::request_header<>
   if(target.rfind("/api/", 0) != 0) return std::nullopt; // the page's files
   if(!access.has_token(std::string_view(h["X-Editor-Token"].data(), h["X-Editor-Token"].size()),
                        std::string_view(h[http::field::cookie].data(), h[http::field::cookie].size())))
-    return error_answer(http::status::unauthorized,
+    return error_answer(http::status::forbidden,
                         "missing or wrong session token: open the address the program printed (it ends with ?token=...)", true);
   if(h.method() == http::verb::post)
   {

@@ -83,9 +83,9 @@ try {
   // ---- only the user's requests: token, Host, Origin, JSON, no chunked bodies
   const port = new URL(url).port;
   const noToken = await fetch(url + 'api/state');
-  check('no token: 401', noToken.status === 401, (await noToken.json()).error);
+  check('no token: 403', noToken.status === 403, (await noToken.json()).error);
   const wrong = await fetch(url + 'api/state', { headers: { 'X-Editor-Token': '0'.repeat(32) } });
-  check('a wrong token: 401', wrong.status === 401);
+  check('a wrong token: 403', wrong.status === 403);
   const cookie = await fetch(url + 'api/state', { headers: { Cookie: `a=b; fs_editor_token=${editor.token}` } });
   check('the token as a cookie: 200', cookie.status === 200);
   const rebound = await rawRequest('GET', 'api/state', { Host: 'attacker.example:' + port, 'X-Editor-Token': editor.token });
