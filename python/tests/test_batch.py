@@ -103,7 +103,7 @@ def test_program_and_dask_give_the_same_table(inputs, tmp_path):
     assert len(expected) == 25
     assert sum(r["status"] == "done" for r in expected) == 24
     assert [r["status"] for r in expected if "garbage" in r["mesh"]] == ["failed"]
-    assert next(r for r in expected if r["output"] == "fandisk")["patches"] == "21"
+    assert next(r for r in expected if r["output"] == "fandisk")["patches"] == "22"
 
     out = tmp_path / "dask"
     rows = batch.run([str(inputs)], str(out), workers=2, progress=None)
@@ -138,7 +138,7 @@ def test_command_line(inputs, tmp_path):
     assert ok.returncode == 0, ok.stderr
     assert "progress: [1/2]" in ok.stderr and "s left" in ok.stderr
     rows = table(tmp_path / "cli" / "batch_summary.csv")
-    assert rows[0]["patches"] == "26"  # fandisk with its crest lines at alpha 1: the faces' patches (21 at the defaults)
+    assert rows[0]["patches"] == "26"  # fandisk with its crest lines at alpha 1: the faces' patches (22 at the defaults)
     bad = subprocess.run([sys.executable, "-m", "feature_segmentation.batch", str(inputs / "fandisk.off"),
                           "--output-dir", str(tmp_path / "bad"), "--alpha", "nan"], env=env, capture_output=True,
                          text=True)

@@ -118,21 +118,45 @@ BOOST_AUTO_TEST_CASE(cylinder_has_no_discontinuity)
   BOOST_TEST(seg.number_of_crease_edges() == 0u);
 }
 
-// On fandisk, a clean tessellation cut open along creases, the feature edges are by
-// default exactly the creases and discontinuities; crest_lines_on_clean_tessellations(true)
-// adds the crest lines (the paper's features).
-BOOST_AUTO_TEST_CASE(clean_tessellation_without_crest_lines)
+// On fandisk, a clean tessellation cut open along creases, the crest lines weigh less
+// than the creases by default: their alpha_e is alpha - 0.5 (0.1 at the default alpha),
+// a crease's is alpha; crest_lines_on_clean_tessellations(true) gives them the full
+// alpha (the paper's features). Both find the same 8 crest lines.
+BOOST_AUTO_TEST_CASE(clean_tessellation_crest_lines_weigh_less)
 {
   SM m;
   BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m));
-  FS::Feature_aligned_segmentation<SM> with(m, FS::parameters::crest_lines_on_clean_tessellations(true)), without(m);
-  BOOST_TEST(with.number_of_crease_edges() == 926u); // 876 creases and 50 discontinuity edges
-  BOOST_TEST(with.number_of_feature_edges() > with.number_of_crease_edges()); // and crest lines
-  BOOST_TEST(with.feature_lines().lines.size() > 0u);
-  BOOST_TEST(without.number_of_crease_edges() == with.number_of_crease_edges());
-  BOOST_TEST(without.number_of_feature_edges() == without.number_of_crease_edges());
-  BOOST_TEST(without.feature_lines().lines.size() == 0u);
-  BOOST_TEST(without.number_of_patches() == 21u);
+  FS::Feature_aligned_segmentation<SM> full(m, FS::parameters::crest_lines_on_clean_tessellations(true)), weak(m);
+  BOOST_TEST(full.number_of_crease_edges() == 926u); // 876 creases and 50 discontinuity edges
+  BOOST_TEST(weak.number_of_crease_edges() == full.number_of_crease_edges());
+  BOOST_TEST(full.feature_lines().lines.size() == 8u); // 3 ridges and 5 valleys
+  BOOST_TEST(weak.feature_lines().lines.size() == 8u);
+  BOOST_TEST(weak.number_of_feature_edges() == full.number_of_feature_edges());
+  std::size_t crest_edges = 0, crease_edges = 0;
+  for(auto e : edges(m))
+  {
+    if(weak.is_crease_edge(e))
+    {
+      ++crease_edges;
+      BOOST_TEST(weak.alpha(e) == 0.6, boost::test_tools::tolerance(1e-12));
+    }
+    else if(weak.is_feature_edge(e))
+    {
+      ++crest_edges;
+      BOOST_TEST(weak.alpha(e) == 0.1, boost::test_tools::tolerance(1e-12));
+      BOOST_TEST(full.alpha(e) == 0.6, boost::test_tools::tolerance(1e-12));
+    }
+  }
+  BOOST_TEST(crease_edges == 926u);
+  BOOST_TEST(crest_edges > 0u);
+  BOOST_TEST(crest_edges + crease_edges <= weak.number_of_feature_edges()); // counted on the working mesh
+  // a global alpha edit moves the crest lines' alpha_e with it, 0.5 below
+  weak.set_alpha(1.5);
+  for(auto e : edges(m))
+    if(weak.is_feature_edge(e) && !weak.is_crease_edge(e))
+      BOOST_TEST(weak.alpha(e) == 1.0, boost::test_tools::tolerance(1e-12));
+  // 22 patches: the creases and discontinuities, and one seam of the curved side
+  BOOST_TEST(FS::Feature_aligned_segmentation<SM>(m).number_of_patches() == 22u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

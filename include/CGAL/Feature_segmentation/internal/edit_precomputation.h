@@ -30,6 +30,11 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
+// On a clean tessellation cut open along its creases, the crest lines' alpha_e is the
+// global alpha minus this: at the default alpha they do not cut the B-rep faces, as alpha
+// grows they do, so that alpha stays the granularity control on CAD parts.
+constexpr double clean_crest_alpha_offset = 0.5;
+
 template <typename TriangleMesh>
 class Edit_precomputation
 {
@@ -159,7 +164,11 @@ private:
     // curvature discontinuities, and crest lines mostly cut its curved faces apart
     // (crest_lines_on_clean_tessellations(false) leaves them out)
     Segmentation_options o = opt;
-    o.detect_crest_lines = !cut.clean || opt.crest_lines_on_clean_tessellations;
+    // crest lines on a clean tessellation weigh less: alpha_e is alpha minus
+    // clean_crest_alpha_offset on their edges (crest_lines_on_clean_tessellations(true):
+    // the full alpha, as the paper)
+    const bool weak_crests = cut.clean && !opt.crest_lines_on_clean_tessellations &&
+                             is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value;
     const Mesh_indexing<TriangleMesh>& in = *input_idx;
     const Mesh_indexing<TriangleMesh>& wi = d.idx;
     auto wvpm = get_const_property_map(CGAL::vertex_point, wm);
@@ -219,6 +228,14 @@ private:
     };
     if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
       for(std::size_t e = 0; e < a.size(); ++e) a[e] = user_alpha(cut.input_edge[e]);
+    if(weak_crests)
+      for(std::size_t e = 0; e < a.size(); ++e)
+      {
+        if(!d.features.is_feature_edge[e]) continue;
+        if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+          if(get(get_parameter(np, internal_np::edge_is_feature), in.edge_at(cut.input_edge[e]))) continue;
+        a[e] -= clean_crest_alpha_offset;
+      }
     first_tie = d.edge_vertices.size();
     {
       std::vector<std::size_t> begin(in.number_of_edges() + 1, 0);
