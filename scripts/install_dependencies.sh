@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages the package, its tests, benchmarks and manual need.
+# Installs the Debian 12 packages the package, its tests, benchmarks and manual need
+# (with --evaluation, also what the quality evaluation needs).
 # A no-op when everything is present; nothing is fetched from outside Debian's archive.
 set -euo pipefail
 
@@ -21,6 +22,9 @@ packages=(
   python3-dev pybind11-dev python3-numpy python3-pytest   # the Python module and its tests
   python3-distributed   # Dask: python3 -m feature_segmentation.batch
 )
+# --evaluation: also gmsh, which builds the evaluation's generated parts (large: the test
+# command does without it)
+if [ "${1:-}" = "--evaluation" ]; then packages+=(gmsh); fi
 # npm: Debian's package, unless an npm comes with the installed Node.js (NodeSource's)
 if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 

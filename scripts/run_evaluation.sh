@@ -22,7 +22,7 @@ build="${FS_BUILD_DIR:-$here/build}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 tile="${FS_TILE_SIZE:-300}"
 
-"$here/scripts/install_dependencies.sh"
+"$here/scripts/install_dependencies.sh" --evaluation
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --target evaluate_quality -j "$jobs"

@@ -91,6 +91,11 @@ struct Options
   // (fandisk's resolution series); empty: everything
   std::set<std::string> only;
   std::set<std::string> parts; // --parts: the parts of the CAD table to evaluate; empty: all
+#ifdef FS_GENERATED_PARTS_DIR
+  std::string generated = FS_GENERATED_PARTS_DIR; // --generated: the gmsh parts with their labels
+#else
+  std::string generated;
+#endif
   bool robustness = true;
   Cad_options cad_options;
 
@@ -357,6 +362,8 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
      "resolution (fandisk's resolution series); default: everything")
     ("parts", po::value(&parts)->value_name("NAME[,NAME...]"),
      "CAD table: only these parts (file names without extension, e.g. 24051_4852a192_5,abc_00000026)")
+    ("generated", po::value(&opt.generated)->value_name("DIR")->default_value(opt.generated),
+     "CAD table: the folder of the generated parts (NAME.obj and NAME.labels, made by the target generated_parts)")
     ("no-robustness", po::bool_switch(&no_robustness), "quality table: without the noise columns")
     ("noise", po::value(&noise)->value_name("X,Y,...")->default_value(noise),
      "CAD table: the noise levels, standard deviations as fractions of the diagonal")
@@ -488,7 +495,7 @@ int main(int argc, char** argv)
   }
   const std::string machine = machine_description();
   const bool quality_evaluated = !opt.quality_table() || run_quality_table(opt, machine);
-  if(opt.selected("cad")) run_cad_table(opt.data, opt.out, opt.cad_options, machine, opt.parts);
+  if(opt.selected("cad")) run_cad_table(opt.data, opt.out, opt.cad_options, machine, opt.parts, opt.generated);
   if(opt.selected("resolution"))
     run_resolution_series(std::string(FS_MESH_DIR) + "/fandisk.off", opt.out, opt.cad_options, machine);
   return quality_evaluated ? 0 : 1;

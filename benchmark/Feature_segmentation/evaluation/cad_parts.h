@@ -103,8 +103,9 @@ struct Cad_part
 
 /// The kinds of ground-truth files: NAME.obj with NAME.labels (DATA/cad), NAME.obj.gz
 /// with NAME.labels (DATA/abc-dev: native ABC meshes, gzipped), NAME.obj with NAME.yml
-/// (DATA/abc: the ABC feature format).
-enum class Part_format { OBJ_LABELS, GZIPPED_OBJ_LABELS, ABC_YML };
+/// (DATA/abc: the ABC feature format); NAME.obj with NAME.labels made by gmsh from the
+/// scripts of benchmark/Feature_segmentation/generated (the build's generated parts).
+enum class Part_format { OBJ_LABELS, GZIPPED_OBJ_LABELS, ABC_YML, GENERATED_OBJ_LABELS };
 
 /// The set a part belongs to, named as in the tables.
 inline std::string part_set(Part_format format)
@@ -113,6 +114,7 @@ inline std::string part_set(Part_format format)
   {
     case Part_format::OBJ_LABELS: return "cad";
     case Part_format::GZIPPED_OBJ_LABELS: return "abc-dev";
+    case Part_format::GENERATED_OBJ_LABELS: return "generated";
     default: return "abc";
   }
 }
@@ -319,7 +321,8 @@ inline const std::vector<std::pair<std::string, std::string> >& cad_methods()
 {
   static const std::vector<std::pair<std::string, std::string> > methods = {
     {"default", "this package (defaults)"}, {"paper", "paper's pipeline"}, {"sharp20", "sharp edges 20"},
-    {"sharp45", "sharp edges 45"},          {"sharp60", "sharp edges 60"}, {"vsa", "VSA (true count)"}};
+    {"sharp45", "sharp edges 45"},          {"sharp60", "sharp edges 60"}, {"ransac", "Efficient RANSAC"},
+    {"vsa", "VSA (true count)"}};
   return methods;
 }
 
@@ -332,6 +335,7 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
   runs.push_back(run_package(mesh, options, false));
   runs.push_back(run_package(mesh, options, true));
   for(double angle : {20., 45., 60.}) runs.push_back(run_sharp_edges(mesh, angle));
+  runs.push_back(run_efficient_ransac(mesh));
   runs.push_back(run_vsa(mesh, true_patches));
   auto truth =
     boost::make_function_property_map<face_descriptor>([&labels](face_descriptor f) { return labels[f.idx()]; });
@@ -395,7 +399,8 @@ inline void write_and_print(const std::filesystem::path& path, const std::string
 inline const std::vector<std::pair<std::string, std::vector<std::string> > >& cad_groups()
 {
   static const std::vector<std::pair<std::string, std::vector<std::string> > > groups = {
-    {"development (cad + abc-dev)", {"cad", "abc-dev"}}, {"cad", {"cad"}}, {"abc-dev", {"abc-dev"}}};
+    {"development (cad + abc-dev)", {"cad", "abc-dev"}}, {"cad", {"cad"}}, {"abc-dev", {"abc-dev"}},
+    {"generated", {"generated"}}};
   return groups;
 }
 
@@ -457,7 +462,9 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
         "with a YAML ground truth, outside the means. \"this package (defaults)\": segment_along_features() with "
      << settings_text(options)
      << "; \"paper's pipeline\": crease_angle 180 (crest lines only), neighborhood_radius 0, alpha 0.6; \"sharp "
-        "edges N\": CGAL's sharp_edges_segmentation at N degrees; \"VSA (true count)\": CGAL's variational shape "
+        "edges N\": CGAL's sharp_edges_segmentation at N degrees; \"Efficient RANSAC\": CGAL's shape detection "
+        "(planes, cylinders, cones, spheres, tori) on the face centroids and normals, a patch per connected set of "
+        "faces of one shape (evaluation/ransac.h); \"VSA (true count)\": CGAL's variational shape "
         "approximation with the true patch count (L21, hierarchical seeding, seeded). \"tang.\": the share of the "
         "true boundary length whose dihedral angle is below 20 degrees (tangent-continuous), on the clean mesh. "
         "Noise: every vertex moved along its normal by a normal deviate of the given standard deviation (seed 1).\n";
@@ -501,23 +508,33 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
   write_and_print(std::filesystem::path(out) / "cad_parts.md", md.str());
 }
 
-/// The CAD table: evaluates the parts of DATA/cad (NAME.obj), DATA/abc-dev (NAME.obj.gz)
-/// and DATA/abc (NAME.obj with NAME.yml), each with its ground truth, at every noise
-/// level of `options`; `only_parts`, if not empty, keeps the parts named in it. Writes
-/// OUT/cad_parts.md and OUT/cad_parts.csv and prints the markdown. Without DATA/cad and
-/// DATA/abc-dev, says so on the standard output and returns false (nothing written).
+/// The CAD table: evaluates the parts of DATA/cad (NAME.obj), DATA/abc-dev (NAME.obj.gz),
+/// DATA/abc (NAME.obj with NAME.yml) and `generated` (NAME.obj, the gmsh parts made by
+/// the build), each with its ground truth, at every noise level of `options`;
+/// `only_parts`, if not empty, keeps the parts named in it. Writes OUT/cad_parts.md and
+/// OUT/cad_parts.csv and prints the markdown. Without any of these folders, says so on
+/// the standard output and returns false (nothing written).
 inline bool run_cad_table(const std::string& data, const std::string& out, const Cad_options& options,
-                          const std::string& machine, const std::set<std::string>& only_parts = {})
+                          const std::string& machine, const std::set<std::string>& only_parts = {},
+                          const std::string& generated = {})
 {
   namespace fsys = std::filesystem;
   std::error_code ec;
   const fsys::path cad = fsys::path(data) / "cad", abc_dev = fsys::path(data) / "abc-dev";
-  if(data.empty() || (!fsys::is_directory(cad, ec) && !fsys::is_directory(abc_dev, ec)))
-  {
-    std::cout << "evaluate_quality: no CAD parts ("
+  const bool has_data = !data.empty() && (fsys::is_directory(cad, ec) || fsys::is_directory(abc_dev, ec));
+  if(!has_data)
+    std::cout << "evaluate_quality: no development parts ("
               << (data.empty() ? "no data folder: set FEATURE_SEGMENTATION_DATA or --data"
                                : cad.string() + " and " + abc_dev.string() + " absent")
-              << "): CAD table skipped" << std::endl;
+              << ")" << std::endl;
+  const bool has_generated = !generated.empty() && fsys::is_directory(generated, ec);
+  if(!has_generated)
+    std::cout << "evaluate_quality: no generated parts ("
+              << (generated.empty() ? "no folder given: --generated DIR" : generated + " absent: build the target generated_parts")
+              << ")" << std::endl;
+  if(!has_data && !has_generated)
+  {
+    std::cout << "evaluate_quality: CAD table skipped" << std::endl;
     return false;
   }
   const auto files = [&ec](const fsys::path& folder, const std::string& ending) {
@@ -535,7 +552,10 @@ inline bool run_cad_table(const std::string& data, const std::string& out, const
   std::vector<std::pair<fsys::path, Part_format> > inputs;
   for(const fsys::path& p : files(cad, ".obj")) inputs.emplace_back(p, Part_format::OBJ_LABELS);
   for(const fsys::path& p : files(abc_dev, ".obj.gz")) inputs.emplace_back(p, Part_format::GZIPPED_OBJ_LABELS);
-  for(const fsys::path& p : ground_truth_models(fsys::path(data) / "abc")) inputs.emplace_back(p, Part_format::ABC_YML);
+  if(has_data)
+    for(const fsys::path& p : ground_truth_models(fsys::path(data) / "abc")) inputs.emplace_back(p, Part_format::ABC_YML);
+  if(has_generated)
+    for(const fsys::path& p : files(generated, ".obj")) inputs.emplace_back(p, Part_format::GENERATED_OBJ_LABELS);
   std::vector<Cad_result> results;
   for(const auto& input : inputs)
   {

@@ -45,6 +45,8 @@
 #include <string>
 #include <vector>
 
+#include "ransac.h"
+
 namespace fs_evaluation {
 
 namespace FS = CGAL::Feature_segmentation;
@@ -250,6 +252,19 @@ inline Segmentation run_vsa(const Mesh& mesh, std::size_t k, unsigned seed = 1)
   s.setting = std::to_string(k) + " proxies";
   s.face_patch.resize(mesh.number_of_faces());
   for(auto f : faces(mesh)) s.face_patch[f.idx()] = get(proxy, f);
+  derive_vertex_patches(mesh, s);
+  return s;
+}
+
+/// CGAL's Efficient RANSAC on the face centroids and normals (efficient_ransac_face_patches()).
+inline Segmentation run_efficient_ransac(const Mesh& mesh)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  Segmentation s;
+  s.face_patch = efficient_ransac_face_patches(mesh);
+  s.seconds = seconds_since(t0);
+  s.method = "Efficient RANSAC";
+  s.setting = "planes, cylinders, cones, spheres, tori";
   derive_vertex_patches(mesh, s);
   return s;
 }
