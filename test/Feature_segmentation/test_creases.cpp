@@ -483,3 +483,46 @@ BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// A rod forty times longer than its radius (length 40, radius 1), 20 facets round it
+// (18 degrees between neighbours, in the gap test's band) and flat ends. The ball of the
+// gap test (5% of the diagonal, about the rod's width) around an end's 90-degree crease
+// holds more band length along the side than crease length round the end; a bend of 85
+// degrees or more on a clean tessellation is a crease whatever its ball holds, so the
+// rod is its side and its two ends.
+BOOST_AUTO_TEST_CASE(the_ends_of_a_long_rod_are_creases)
+{
+  const int around = 20, along = 80;
+  const double length = 40, radius = 1;
+  fs_test::Soup s;
+  for(int j = 0; j <= along; ++j)
+    for(int i = 0; i < around; ++i)
+    {
+      const double a = 2 * M_PI * i / around;
+      s.points.push_back({radius * std::cos(a), radius * std::sin(a), length * j / along});
+    }
+  const std::size_t bottom = s.points.size(), top = bottom + 1;
+  s.points.push_back({0., 0., 0.});
+  s.points.push_back({0., 0., length});
+  const auto at = [&](int i, int j) { return std::size_t(j * around + (i % around)); };
+  std::vector<int> side;
+  for(int j = 0; j < along; ++j)
+    for(int i = 0; i < around; ++i)
+    {
+      s.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      s.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      side.insert(side.end(), {0, 0});
+    }
+  for(int i = 0; i < around; ++i)
+  {
+    s.faces.push_back({bottom, at(i + 1, 0), at(i, 0)});
+    s.faces.push_back({top, at(i, along), at(i + 1, along)});
+    side.insert(side.end(), {1, 2});
+  }
+  const SM m = fs_test::to_mesh<SM>(s);
+  BOOST_REQUIRE(CGAL::is_closed(m) && CGAL::is_triangle_mesh(m));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  BOOST_TEST(seg.number_of_crease_edges() == std::size_t(2 * around)); // the two end rings only
+  BOOST_TEST(seg.number_of_patches() == 3u);
+  BOOST_TEST(patches_are_sides(m, seg, side, 3));
+}

@@ -274,7 +274,8 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
             : raw;
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
-  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel);
+  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
+                        clean ? crease_strong_angle : 360.);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
   join_isolated_crease_faces(idx, angle, is_crease);
   return is_crease;

@@ -49,6 +49,12 @@ namespace internal {
 constexpr double crease_gap_band = 0.75;
 constexpr double crease_gap_ratio = 0.5;
 constexpr double crease_gap_radius = 0.05;
+// On a clean tessellation, a candidate bending by this many degrees or more is a crease
+// whatever its ball holds: the facets of a curved face bend far less (by 22.5 degrees
+// with 16 round a circle), while the ball of a long thin part's end (a tube twenty times
+// longer than wide: radius 5% of the diagonal, twice its width) holds more of them than
+// of the end's crease. Smooth models are not clean and keep the test for every bend.
+constexpr double crease_strong_angle = 85.;
 // The raw roughness (normal_roughness) up to which the band is read on the raw angles:
 // clean CAD parts measure at most 0.0085 and the paper's smooth models 0.012 to 0.028,
 // whose filtered normals turn smooth bends into staircases with gaps; noisy meshes
@@ -551,18 +557,19 @@ inline std::vector<std::size_t> candidates_near_band_edges(const Edge_geometry& 
 }
 
 // Drops the candidates (is_crease, from `angle`) that fail the gap test; `raw` are the
-// dihedral angles of the unfiltered normals, `raw_roughness` their roughness. Each
+// dihedral angles of the unfiltered normals, `raw_roughness` their roughness; a candidate
+// bending by `keep_from` degrees or more is kept untested (crease_strong_angle). Each
 // candidate's test reads the angles only, never is_crease, so the candidates are tested
 // independently: by TBB's threads if `parallel`, with the same result at any count.
 // Only the candidates near a band edge are searched (candidates_near_band_edges()).
 template <typename TriangleMesh, typename VPM>
 void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
                            const std::vector<double>& raw, double raw_roughness, double crease_angle,
-                           std::vector<char>& is_crease, bool parallel = false)
+                           std::vector<char>& is_crease, bool parallel = false, double keep_from = 360.)
 {
   std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < is_crease.size(); ++e)
-    if(is_crease[e]) candidates.push_back(e);
+    if(is_crease[e] && angle[e] < keep_from) candidates.push_back(e);
   const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
   Edge_geometry geometry = edge_geometry(idx, vpm);
   const std::vector<std::size_t> searched =
