@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "provenance.h"
+
 namespace fs_bench {
 
 inline double seconds_since(std::chrono::steady_clock::time_point start)
@@ -46,21 +48,6 @@ inline std::string csv_text(const std::string& s)
   std::string q = "\"";
   for(char ch : s) { if(ch == '"') q += '"'; q += ch; }
   return q + "\"";
-}
-
-// The CPU model as /proc/cpuinfo names it.
-inline std::string cpu_name()
-{
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while(std::getline(cpuinfo, line))
-    if(line.compare(0, 10, "model name") == 0)
-    {
-      const std::size_t colon = line.find(':');
-      if(colon != std::string::npos && colon + 2 <= line.size())
-        return line.substr(colon + 2);
-    }
-  return "unknown";
 }
 
 typedef std::array<double, 3> Soup_point;

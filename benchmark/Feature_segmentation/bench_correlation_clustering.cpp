@@ -224,6 +224,8 @@ int main(int argc, char** argv)
     csv << row.grid << ',' << options.bias << ',' << row.nodes << ',' << row.edges << ',' << row.seed << ','
         << row.solver << ',' << row.min_seconds << ',' << row.median_seconds << ','
         << row.objective << ',' << row.clusters << ",\"" << cpu << "\"\n";
+  csv.close();
+  fs_bench::write_provenance(options.csv, argc, argv);
   std::cout << "\nwrote " << options.csv << "\n";
   return 0;
 }

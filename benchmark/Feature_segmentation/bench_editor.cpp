@@ -294,6 +294,8 @@ int main(int argc, char** argv)
         << ',' << r.edit_max << ',' << (r.solve_median < 0 ? std::string() : std::to_string(r.solve_median)) << ','
         << r.labels_median << '\n';
   }
+  csv.close();
+  fs_bench::write_provenance(out, argc, argv);
   std::cout << "\nCSV: " << out << '\n';
   return 0;
 }

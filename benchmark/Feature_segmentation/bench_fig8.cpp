@@ -426,6 +426,8 @@ int run(const Options& options)
   write_svg(svg, rows, mesh_name + ", " + std::to_string(num_faces(mesh)) + " faces; " + cpu +
                          ", one thread; precomputation " + format("%.2f", variant[2].precomputation()) +
                          " s not included");
+  csv.close();
+  fs_bench::write_provenance(options.csv, argc, argv);
   std::cout << "\nWritten: " << options.csv << ", " << options.md << ", " << options.svg << std::endl;
   return 0;
 }

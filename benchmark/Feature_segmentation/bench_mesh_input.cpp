@@ -160,5 +160,10 @@ int main(int argc, char** argv)
       std::filesystem::remove(path);
     }
   }
+  if(csv)
+  {
+    csv.close();
+    fs_bench::write_provenance(out_csv, argc, argv);
+  }
   return 0;
 }

@@ -305,6 +305,7 @@ int main(int argc, char** argv)
     std::ofstream svg(svg_path);
     fs_bench::svg_figure(svg, x, panels, "bench_scaling: seconds per stage of feature_segmentation at its defaults (floor 1 ms), " +
                                           fs_bench::cpu_name());
+    fs_bench::write_provenance(csv_path, argc, argv);
     std::cout << "\nWritten: " << csv_path << ", " << md_path << ", " << svg_path << '\n';
   }
   catch(const std::exception& e)

@@ -323,6 +323,8 @@ int main(int argc, char** argv)
         << r.solve << ',' << r.total << ',' << r.patches << ',' << r.cut_cost << ','
         << r.default_total << ',' << r.default_patches << ','
         << options.alpha << ',' << csv_text(cpu) << ',' << cores << ',' << csv_text(r.status) << '\n';
+  csv.close();
+  fs_bench::write_provenance(options.csv, argc, argv);
   std::cout << "\nCSV written to " << options.csv << std::endl;
   return 0;
 }

@@ -58,6 +58,7 @@
 #include "evaluation/quality_tables.h"
 #include "evaluation/report.h"
 #include "evaluation/scenes.h"
+#include "provenance.h"
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
@@ -498,5 +499,7 @@ int main(int argc, char** argv)
   if(opt.selected("cad")) run_cad_table(opt.data, opt.out, opt.cad_options, machine, opt.parts, opt.generated);
   if(opt.selected("resolution"))
     run_resolution_series(std::string(FS_MESH_DIR) + "/fandisk.off", opt.out, opt.cad_options, machine);
+  for(const char* csv : {"table.csv", "cad_parts.csv", "resolution.csv"})
+    fs_bench::write_provenance(fsys::path(opt.out) / csv, argc, argv);
   return quality_evaluated ? 0 : 1;
 }

@@ -1,0 +1,453 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The manual's figure tables, made from the benchmarks' CSV files.
+
+Usage: results_tables.py RESULTS_DIR MANUAL OUT_DIR
+
+RESULTS_DIR is benchmark/Feature_segmentation/results: the CSV files that the
+benchmark programs wrote, each with NAME.provenance.txt beside it (program,
+arguments, machine, date; benchmark/Feature_segmentation/provenance.h). For every
+table below this writes OUT_DIR/NAME.md, a Markdown table and its source line,
+which the manual (MANUAL) includes with \\includedoc. So the figures of the manual's
+Performance and Quality sections are the CSVs' own, and re-running a benchmark into
+results/ updates the manual.
+
+It also checks MANUAL: every table it includes exists, and the Performance and
+Quality sections hold no table typed by hand. It exits with status 1 and one message
+per problem otherwise.
+"""
+
+import csv
+import math
+import os
+import re
+import sys
+
+RESULTS = ""
+ORGANIC = ("fertility", "botijo", "elk", "hand", "bunny")
+
+
+def is_organic(model):
+    return model.split("_")[0] in ORGANIC
+
+
+class TableError(Exception):
+    pass
+
+
+def read_csv(name):
+    path = os.path.join(RESULTS, name)
+    if not os.path.exists(path):
+        raise TableError(f"{path} is missing (run the benchmark that writes it; see "
+                         f"benchmark/Feature_segmentation/results/README.md)")
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def provenance(name):
+    path = os.path.join(RESULTS, os.path.splitext(name)[0] + ".provenance.txt")
+    if not os.path.exists(path):
+        raise TableError(f"{path} is missing: every results CSV needs its provenance")
+    fields = {}
+    with open(path) as f:
+        for line in f:
+            key, _, value = line.partition(":")
+            fields[key.strip()] = value.strip()
+    for key in ("program", "machine", "date"):
+        if not fields.get(key):
+            raise TableError(f"{path}: no '{key}'")
+    return fields
+
+
+def source_line(name):
+    p = provenance(name)
+    arguments = (" " + p["arguments"]) if p.get("arguments") else ""
+    return (f"<em>Measured on {p['date']}, {p['machine']}, by `{p['program']}{arguments}`; "
+            f"source `benchmark/Feature_segmentation/results/{name}`.</em>")
+
+
+def number(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return None
+
+
+def fixed(text, digits=3):
+    x = number(text)
+    return "" if x is None else f"{x:.{digits}f}"
+
+
+def count(text):
+    x = number(text)
+    return "" if x is None else f"{int(round(x)):,}"
+
+
+def seconds(text):
+    """Seconds with three significant digits at least, no more than three decimals."""
+    x = number(text)
+    if x is None:
+        return ""
+    return f"{x:.3f}" if x < 10 else f"{x:.2f}" if x < 100 else f"{x:.1f}"
+
+
+def markdown(header, rows, align=None):
+    align = align or ["---"] * len(header)
+    lines = ["| " + " | ".join(header) + " |", "|" + "|".join(align) + "|"]
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def growth_exponent(points):
+    """Least-squares slope of log y against log x."""
+    pts = [(math.log(x), math.log(y)) for x, y in points if x > 0 and y > 0]
+    if len(pts) < 2:
+        return None
+    mx = sum(p[0] for p in pts) / len(pts)
+    my = sum(p[1] for p in pts) / len(pts)
+    sxx = sum((p[0] - mx) ** 2 for p in pts)
+    return sum((p[0] - mx) * (p[1] - my) for p in pts) / sxx if sxx > 0 else None
+
+
+# ---- Performance --------------------------------------------------------------------
+
+def perf_stages():
+    name = "bench_segmentation.csv"
+    rows = [r for r in read_csv(name) if r.get("status", "ok") in ("", "ok")]
+    body = [[r["mesh"], count(r["faces"]), seconds(r["curvature_s"]), seconds(r["crest_lines_s"]),
+             seconds(r["weights_s"]), seconds(r["solve_s"]), seconds(r["total_s"]), r["patches"],
+             seconds(r["default_total_s"]), r["default_patches"]] for r in rows]
+    return markdown(["mesh", "faces", "curvature", "crest lines", "weights", "solve (full graph)",
+                     "total", "patches", "defaults: seconds", "defaults: patches"], body,
+                    ["---"] + ["---:"] * 9) + "\n\n" + source_line(name)
+
+
+def perf_fig8():
+    name = "fig8.csv"
+    rows = read_csv(name)
+    body = []
+    for r in rows:
+        body.append([fixed(r["alpha"], 1), seconds(r["full_solve_s"]), fixed(r["full_cut_cost"], 2),
+                     seconds(r["geodesic_overseg_s"]), seconds(r["geodesic_solve_s"]),
+                     seconds(r["geodesic_total_s"]), fixed(r["geodesic_cut_cost"], 2),
+                     seconds(r["anisotropic_overseg_s"]), seconds(r["anisotropic_solve_s"]),
+                     seconds(r["anisotropic_total_s"]), fixed(r["anisotropic_cut_cost"], 2),
+                     f"{100 * float(r['gap_anisotropic_vs_full']):.2f}%", r["anisotropic_vs_geodesic"]])
+    table = markdown(["alpha", "(a) solve", "(a) cost", "(b) overseg", "(b) solve", "(b) total", "(b) cost",
+                      "(c) overseg", "(c) solve", "(c) total", "(c) cost", "gap (c)-(a)", "(c) vs (b)"],
+                     body, ["---:"] * 12 + [":---:"])
+    totals = [float(r["anisotropic_total_s"]) for r in rows]
+    gaps = [100 * float(r["gap_anisotropic_vs_full"]) for r in rows[1:]]
+    lower = sum(1 for r in rows if r["anisotropic_vs_geodesic"] == "lower")
+    summary = (f"On {rows[0]['mesh']} ({count(rows[0]['faces'])} faces): (c) takes at most {max(totals):.3f} s "
+               f"at any alpha; above alpha {rows[0]['alpha']} it cuts lower than (a) by "
+               f"{-max(gaps):.1f}% to {-min(gaps):.1f}%; it cuts lower than (b) at {lower} of the "
+               f"{len(rows)} values.")
+    return table + "\n\n" + summary + "\n\n" + source_line(name)
+
+
+def editor_rows():
+    rows = read_csv("bench_editor.csv")
+    meshes = []
+    for r in rows:
+        if (r["mesh"], r["faces"]) not in meshes:
+            meshes.append((r["mesh"], r["faces"]))
+    return rows, meshes
+
+
+def perf_editing_class():
+    name = "bench_editor.csv"
+    rows, meshes = editor_rows()
+    ops = ["set_alpha", "add_to_alpha", "merge_patches", "add_sketch"]
+    body = []
+    for mesh, faces in meshes:
+        cells = [mesh, count(faces)]
+        found = False
+        for op in ops:
+            r = next((r for r in rows if r["mesh"] == mesh and r["edit"] == op + " (library)"), None)
+            if r is None:
+                cells.append("")
+                continue
+            found = True
+            solve = number(r["solve_ms_median"])
+            cells.append(f"{float(r['edit_ms_median']):.3g}" + (f" ({solve:.3g})" if solve is not None else ""))
+        alpha = next((r for r in rows if r["mesh"] == mesh and r["edit"] == "set_alpha (library)"), None)
+        cells.append(f"{float(alpha['labels_ms_median']):.3g}" if alpha else "")
+        if found:
+            body.append(cells)
+    return markdown(["mesh", "faces", "`set_alpha()` (solve)", "`add_to_alpha()` (solve)", "`merge_patches()`",
+                     "`add_sketch()` (solve)", "`vertex_patches()`"], body,
+                    ["---"] + ["---:"] * 6) + "\n\n" + source_line(name)
+
+
+def perf_editor_session():
+    name = "bench_editor.csv"
+    rows, meshes = editor_rows()
+    ops = ["alpha", "refine", "coarsen", "merge", "undo", "redo", "sketch"]
+    body = []
+    for mesh, faces in meshes:
+        session = {r["edit"]: r for r in rows if r["mesh"] == mesh and r["edit"] in ops}
+        if not session:
+            continue
+        cells = [mesh, count(faces)]
+        for op in ops:
+            r = session.get(op)
+            cells.append(f"{float(r['edit_ms_median']):.3g} ({float(r['edit_ms_max']):.3g})" if r else "")
+        labels = [float(r["labels_ms_median"]) for r in session.values()]
+        cells.append(f"{sorted(labels)[len(labels) // 2]:.3g}")
+        body.append(cells)
+    return markdown(["mesh", "faces"] + ops + ["labels"], body, ["---"] + ["---:"] * 9) + "\n\n" + source_line(name)
+
+
+def perf_scaling():
+    name = "scaling.csv"
+    rows = read_csv(name)
+    most = max(int(r["threads"]) for r in rows)
+    stages = ["load", "segmentation", "boundaries", "smoothing", "refinement", "write"]
+    body = []
+    for r in rows:
+        if int(r["threads"]) != most:
+            continue
+        one = next((o for o in rows if o["mesh"] == r["mesh"] and int(o["threads"]) == 1), None)
+        body.append([r["mesh"], count(r["faces"]), seconds(one["wall_s"]) if one else "", seconds(r["wall_s"]),
+                     count(r["peak_mb"])] + [seconds(r[s + "_s"]) for s in stages] + [r["patches"]])
+    table = markdown(["mesh", "faces", "wall s, 1 thread", f"wall s, {most} threads", "peak MB"] + stages +
+                     ["patches"], body, ["---"] + ["---:"] * 11)
+    series = [r for r in rows if r["mesh"].startswith("fandisk")]
+    parts = []
+    for threads in sorted({1, most}):
+        pts = [(float(r["faces"]), float(r["wall_s"])) for r in series if int(r["threads"]) == threads]
+        seg = [(float(r["faces"]), float(r["segmentation_s"])) for r in series if int(r["threads"]) == threads]
+        e, s = growth_exponent(pts), growth_exponent(seg)
+        if e is not None:
+            parts.append(f"{threads} thread{'s' if threads > 1 else ''}: whole run {e:.2f}, segmentation {s:.2f}")
+    exponents = ("Growth exponents over the fandisk series (the slope of log seconds against log faces; "
+                 "1 is linear): " + "; ".join(parts) + ".") if parts else ""
+    return table + "\n\n" + exponents + "\n\n" + source_line(name)
+
+
+def perf_mesh_input():
+    name = "mesh_input.csv"
+    rows = read_csv(name)
+    labels = {"off": "OFF", "obj": "OBJ (`f a//n`)", "ply": "binary PLY", "stl": "binary STL"}
+    body = [[labels.get(r["format"], r["format"]), count(r["faces"]), f"{float(r['bytes']) / 1e6:.1f}",
+             seconds(r["load"]), seconds(r["parse"]), seconds(r["cgal_read_polygon_soup"]),
+             seconds(r["count_lines"])] for r in rows]
+    return markdown(["format", "faces", "MB", "load (the program's reader)", "parse only",
+                     "CGAL `read_polygon_soup()`", "count the lines"], body,
+                    ["---"] + ["---:"] * 6) + "\n\n" + source_line(name)
+
+
+# ---- Quality ------------------------------------------------------------------------
+
+def quality_nut():
+    name = "quality_table.csv"
+    rows = [r for r in read_csv(name) if r["model"] == "abc_00000006"]
+    if not rows:
+        raise TableError(f"{name}: no rows of abc_00000006")
+    body = []
+    for r in rows:
+        setting = r["setting"] + (", smoothed" if r["smoothed"] == "1" else "") + f" ({r['role']})"
+        body.append([r["method"], setting, r["patches"], fixed(r["precision"]), fixed(r["recall"]),
+                     fixed(r["f_score"]), fixed(r["rand_index"]), r["over_segmentation"], r["under_segmentation"],
+                     fixed(r["sharp_curve_recall"]), fixed(r["cut_cost"], 2), fixed(r["curve_f_score"])])
+    return markdown(["method", "setting", "patches", "boundary P", "boundary R", "boundary F", "Rand index", "over",
+                     "under", "sharp-curve recall", "cut cost", "curve F"], body) + "\n\n" + source_line(name)
+
+
+def quality_coverage():
+    name = "quality_table.csv"
+    rows = read_csv(name)
+    groups = []
+    for r in rows:
+        key = (r["method"], r["role"], r["smoothed"])
+        if key not in groups:
+            groups.append(key)
+    body = []
+    for method, role, smoothed in groups:
+        sel = [r for r in rows if (r["method"], r["role"], r["smoothed"]) == (method, role, smoothed)]
+
+        def mean(field, keep):
+            xs = [number(r[field]) for r in sel if keep(r) and number(r[field]) is not None]
+            return (sum(xs) / len(xs), len(xs)) if xs else (None, 0)
+
+        def cell(field, keep, curve_field=None):
+            m, n = mean(field, keep)
+            text = "" if m is None else f"{m:.3f}"
+            if curve_field and smoothed == "1":
+                c, _ = mean(curve_field, keep)
+                text += "" if c is None else f" ({c:.3f})"
+            return text + f" ({n} model{'' if n == 1 else 's'})" if m is not None and n != expected(keep) else text
+
+        def expected(keep):
+            return len({r["model"] for r in rows if keep(r)})
+
+        cad = lambda r: not is_organic(r["model"])
+        organic = lambda r: is_organic(r["model"])
+        every = lambda r: True
+        patches = sorted(int(r["patches"]) for r in sel if number(r["patches"]) is not None)
+        median = patches[len(patches) // 2] if patches else ""
+        body.append([method, role + (", smoothed" if smoothed == "1" else ""),
+                     cell("coverage", cad, "curve_coverage"), cell("coverage", organic, "curve_coverage"),
+                     cell("redundancy_fraction", every, "curve_redundancy_fraction"), f"{median:,}" if median != "" else ""])
+    models = sorted({r["model"] for r in rows})
+    cad_count = sum(1 for m in models if not is_organic(m))
+    return markdown(["method", "setting", f"mean coverage, {cad_count} CAD-like models",
+                     f"mean coverage, {len(models) - cad_count} organic models",
+                     f"mean redundancy, all {len(models)}", "median patches"], body) + "\n\n" + source_line(name)
+
+
+def quality_resolution():
+    name = "resolution.csv"
+    rows = read_csv(name)
+    body = [[r["subdivisions"], count(r["faces"]), r["patches"], fixed(r["precision"]), fixed(r["recall"]),
+             fixed(r["f"]), seconds(r["seconds"])] for r in rows]
+    return markdown(["subdivisions", "faces", "patches", "boundary P", "boundary R",
+                     "boundary F against the coarsest", "seconds"], body,
+                    ["---:"] * 7) + "\n\n" + source_line(name)
+
+
+CAD_METHODS = [("default", "default"), ("paper", "paper's pipeline"), ("sharp20", "sharp edges 20"),
+               ("sharp45", "45"), ("sharp60", "60"), ("ransac", "Efficient RANSAC"), ("vsa", "VSA (true count)")]
+
+
+def cad_rows():
+    name = "cad_parts.csv"
+    return name, read_csv(name)
+
+
+def quality_parts(set_name, label):
+    name, rows = cad_rows()
+    parts = []
+    for r in rows:
+        if r["set"] == set_name and number(r["noise"]) == 0 and r["part"] not in [p["part"] for p in parts]:
+            parts.append(r)
+    if not parts:
+        raise TableError(f"{name}: no clean rows of the set {set_name}")
+    body = []
+    for p in parts:
+        cells = [label(p["part"]), count(p["faces"]), p["true_patches"], fixed(p["tangent_share"])]
+        for method, _ in CAD_METHODS:
+            r = next((r for r in rows if r["set"] == set_name and r["part"] == p["part"] and number(r["noise"]) == 0
+                      and r["method"] == method), None)
+            cells.append(f"{fixed(r['f'])} ({r['patches']})" if r else "")
+        body.append(cells)
+    mean = [f"mean of the {len(parts)} parts", "", "", ""]
+    for method, _ in CAD_METHODS:
+        r = next((r for r in rows if r["set"] == "mean " + set_name and number(r["noise"]) == 0
+                  and r["method"] == method), None)
+        mean.append(f"**{fixed(r['f'])}**" if r else "")
+    body.append(mean)
+    return markdown(["part", "faces", "true patches", "tang."] + [m[1] for m in CAD_METHODS], body,
+                    ["---", "---:", "---:", "---:"] + ["---:"] * len(CAD_METHODS)) + "\n\n" + source_line(name)
+
+
+def quality_cad():
+    return quality_parts("cad", lambda part: part.split("_")[0])
+
+
+def quality_abc_dev():
+    return quality_parts("abc-dev", lambda part: part.replace("abc_", ""))
+
+
+def quality_generated():
+    def label(part):
+        kind, _, resolution = part.rpartition("_")
+        return kind.replace("_", " ") + "&nbsp;" + resolution
+    return quality_parts("generated", label)
+
+
+def quality_means():
+    name, rows = cad_rows()
+    sets = []
+    for r in rows:
+        if r["set"].startswith("mean ") and r["set"] not in sets:
+            sets.append(r["set"])
+    levels = sorted({number(r["noise"]) for r in rows if r["set"].startswith("mean ")})
+    body = []
+    for s in sets:
+        for level in levels:
+            cells = [s[len("mean "):], f"{100 * level:g}%" if level else "0"]
+            any_value = False
+            for method, _ in CAD_METHODS:
+                r = next((r for r in rows if r["set"] == s and number(r["noise"]) == level and r["method"] == method),
+                         None)
+                cells.append(fixed(r["f"]) if r else "")
+                any_value |= r is not None
+            if any_value:
+                body.append(cells)
+    nut = [r for r in rows if r["set"] == "abc" and number(r["noise"]) == 0]
+    text = markdown(["set", "noise (of the diagonal)"] + [m[1] for m in CAD_METHODS], body,
+                    ["---", "---:"] + ["---:"] * len(CAD_METHODS))
+    if nut:
+        names = dict(CAD_METHODS, sharp45="sharp edges 45", sharp60="sharp edges 60")
+        cells = [f"{names.get(r['method'], r['method'])} {fixed(r['f'])} ({r['patches']})" for r in nut]
+        text += (f"\n\nThe hex nut (ABC 00000006, {count(nut[0]['faces'])} faces, {nut[0]['true_patches']} true "
+                 f"patches), clean: " + ", ".join(cells) + ".")
+    return text + "\n\n" + source_line(name)
+
+
+TABLES = {
+    "perf_stages": perf_stages,
+    "perf_fig8": perf_fig8,
+    "perf_editing_class": perf_editing_class,
+    "perf_editor_session": perf_editor_session,
+    "perf_scaling": perf_scaling,
+    "perf_mesh_input": perf_mesh_input,
+    "quality_nut": quality_nut,
+    "quality_coverage": quality_coverage,
+    "quality_resolution": quality_resolution,
+    "quality_cad": quality_cad,
+    "quality_abc_dev": quality_abc_dev,
+    "quality_generated": quality_generated,
+    "quality_means": quality_means,
+}
+
+
+def check_manual(manual):
+    problems = []
+    with open(manual) as f:
+        text = f.read()
+    included = set(re.findall(r"\\includedoc\s+(\S+)\.md", text))
+    for name in sorted(included - set(TABLES)):
+        problems.append(f"{manual}: \\includedoc {name}.md, but results_tables.py makes no such table")
+    for name in sorted(set(TABLES) - included):
+        problems.append(f"{manual}: the table {name} is made but not included")
+    for section in ("fs_performance", "fs_quality"):
+        m = re.search(r"^\\section " + section + r"\b(.*?)(?=^\\section |\Z)", text, re.S | re.M)
+        if not m:
+            problems.append(f"{manual}: no section {section}")
+            continue
+        start = text[:m.start()].count("\n") + 1
+        for k, line in enumerate(m.group(0).splitlines()):
+            if line.startswith("|"):
+                problems.append(f"{manual}:{start + k}: a table typed by hand in {section}; its figures belong "
+                                f"in a results CSV and a table of results_tables.py")
+                break
+    return problems
+
+
+def main(argv):
+    global RESULTS
+    if len(argv) != 4:
+        print(__doc__.strip().splitlines()[2], file=sys.stderr)
+        return 2
+    RESULTS, manual, out = argv[1:]
+    os.makedirs(out, exist_ok=True)
+    problems = []
+    for name, make in TABLES.items():
+        try:
+            text = make()
+        except (TableError, KeyError, ValueError) as e:
+            problems.append(f"table {name}: {type(e).__name__}: {e}")
+            continue
+        with open(os.path.join(out, name + ".md"), "w") as f:
+            f.write(text + "\n")
+    problems += check_manual(manual)
+    for p in problems:
+        print("results_tables.py: " + p, file=sys.stderr)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
