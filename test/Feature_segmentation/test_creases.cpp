@@ -490,22 +490,25 @@ BOOST_AUTO_TEST_SUITE_END()
 // holds more band length along the side than crease length round the end; a bend of 85
 // degrees or more on a clean tessellation is a crease whatever its ball holds, so the
 // rod is its side and its two ends.
-BOOST_AUTO_TEST_CASE(the_ends_of_a_long_rod_are_creases)
+// A closed rod along z, of the given length, whose cross-section has radius radius(a)
+// at the angle a: `around` x `along` rectangles on its side (each of two coplanar
+// triangles: a clean tessellation), a fan on each end; side: 0 on the side, 1 and 2 on
+// the ends.
+template <typename Radius>
+fs_test::Soup closed_rod(Radius radius, double length, int around, int along, std::vector<int>& side)
 {
-  const int around = 20, along = 80;
-  const double length = 40, radius = 1;
   fs_test::Soup s;
   for(int j = 0; j <= along; ++j)
     for(int i = 0; i < around; ++i)
     {
       const double a = 2 * M_PI * i / around;
-      s.points.push_back({radius * std::cos(a), radius * std::sin(a), length * j / along});
+      s.points.push_back({radius(a) * std::cos(a), radius(a) * std::sin(a), length * j / along});
     }
   const std::size_t bottom = s.points.size(), top = bottom + 1;
   s.points.push_back({0., 0., 0.});
   s.points.push_back({0., 0., length});
   const auto at = [&](int i, int j) { return std::size_t(j * around + (i % around)); };
-  std::vector<int> side;
+  side.clear();
   for(int j = 0; j < along; ++j)
     for(int i = 0; i < around; ++i)
     {
@@ -519,10 +522,45 @@ BOOST_AUTO_TEST_CASE(the_ends_of_a_long_rod_are_creases)
     s.faces.push_back({top, at(i, along), at(i + 1, along)});
     side.insert(side.end(), {1, 2});
   }
-  const SM m = fs_test::to_mesh<SM>(s);
+  return s;
+}
+
+BOOST_AUTO_TEST_CASE(the_ends_of_a_long_rod_are_creases)
+{
+  const int around = 20;
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(closed_rod([](double) { return 1.; }, 40., around, 80, side));
   BOOST_REQUIRE(CGAL::is_closed(m) && CGAL::is_triangle_mesh(m));
   FS::Feature_aligned_segmentation<SM> seg(m);
   BOOST_TEST(seg.number_of_crease_edges() == std::size_t(2 * around)); // the two end rings only
   BOOST_TEST(seg.number_of_patches() == 3u);
   BOOST_TEST(patches_are_sides(m, seg, side, 3));
+}
+
+// A clean tessellation whose creases cut it into its faces is a CAD part: its crest lines
+// weigh alpha - 0.5. One whose creases leave a piece of 90% of the surface or more is a
+// smooth model with a few creases (a remeshed or subdivided one): its crest lines are its
+// features and keep the full alpha. A rod whose cross-section has four lobes: its side
+// carries the lobes' four ridges and four valleys along its length; its ends are creases.
+BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_cad_part_only)
+{
+  const auto lobes = [](double a) { return 1. + 0.2 * std::cos(4 * a); };
+  std::vector<int> side;
+  const auto pieces = [&](double length, bool full_alpha) {
+    const SM m = fs_test::to_mesh<SM>(closed_rod(lobes, length, 96, int(4 * length), side));
+    FS::Feature_aligned_segmentation<SM> seg(
+      m, FS::parameters::crest_lines_on_clean_tessellations(full_alpha));
+    BOOST_TEST(seg.number_of_crease_edges() == 192u); // the two end rings (the side bends by 14 degrees at most)
+    return seg.number_of_patches();
+  };
+  // short: the side is 69% of the surface (each end's area 1.02 pi = 3.20, the side's
+  // perimeter 7.20 times the length 2): the creases cut it into its faces
+  const std::size_t short_default = pieces(2., false), short_full = pieces(2., true);
+  BOOST_TEST(short_default == 3u);         // the side and the two ends
+  BOOST_TEST(short_full > short_default);  // the crest lines cut the side at the full alpha
+  // long (the side 99% of the surface): a smooth rod, its crest lines at the full alpha
+  // either way
+  const std::size_t long_default = pieces(100., false), long_full = pieces(100., true);
+  BOOST_TEST(long_default > 3u);
+  BOOST_TEST(long_default == long_full);
 }

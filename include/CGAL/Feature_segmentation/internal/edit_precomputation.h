@@ -30,9 +30,10 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// On a clean tessellation cut open along its creases, the crest lines' alpha_e is the
-// global alpha minus this: at the default alpha they do not cut the B-rep faces, as alpha
-// grows they do, so that alpha stays the granularity control on CAD parts.
+// On a clean CAD tessellation cut open along its creases (Crease_cut::cad), the crest
+// lines' alpha_e is the global alpha minus this: at the default alpha they do not cut the
+// B-rep faces, as alpha grows they do, so that alpha stays the granularity control on
+// CAD parts.
 constexpr double clean_crest_alpha_offset = 0.5;
 
 template <typename TriangleMesh>
@@ -167,7 +168,7 @@ private:
     // crest lines on a clean tessellation weigh less: alpha_e is alpha minus
     // clean_crest_alpha_offset on their edges (crest_lines_on_clean_tessellations(true):
     // the full alpha, as the paper)
-    const bool weak_crests = cut.clean && !opt.crest_lines_on_clean_tessellations &&
+    const bool weak_crests = cut.cad && !opt.crest_lines_on_clean_tessellations &&
                              is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value;
     const Mesh_indexing<TriangleMesh>& in = *input_idx;
     const Mesh_indexing<TriangleMesh>& wi = d.idx;
