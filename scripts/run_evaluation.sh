@@ -8,6 +8,8 @@
 #   OUT/resolution.md, OUT/resolution.csv             fandisk at 13k to 828k faces
 #   OUT/contact_sheets/MODEL.png                       feature lines and every method's patches (a row
 #                                                      per CC variant: default, smoothed, best, smoothed)
+#   OUT/contact_sheets/cad_worst_five.png              the five CAD parts with the lowest F at the
+#                                                      defaults: ground truth and three methods
 #   OUT/tiles/                                         the pictures' parts (OUT/scenes/, the renderer's
 #                                                      input, is kept with FS_KEEP_SCENES=1)
 # Usage: scripts/run_evaluation.sh [OUT]   (default: out/evaluation)
@@ -52,6 +54,14 @@ for scene in "$out"/scenes/*.scene; do
           -title "$model" "$out/contact_sheets/$model.png"
   echo "run_evaluation: $out/contact_sheets/$model.png"
 done
+
+# The five CAD parts this package does worst on (evaluate_quality's worst_K_NAME scenes),
+# one row each: ground truth, this package, sharp edges 20, Efficient RANSAC.
+worst=("$out"/contact_sheets/worst_*.png)
+if [ -e "${worst[0]}" ]; then
+  convert "${worst[@]}" -append "$out/contact_sheets/cad_worst_five.png"
+  echo "run_evaluation: $out/contact_sheets/cad_worst_five.png"
+fi
 
 # The scenes (about 4 MB per model) only feed the renderer.
 if [ "${FS_KEEP_SCENES:-0}" != 1 ]; then rm -rf "$out/scenes"; fi

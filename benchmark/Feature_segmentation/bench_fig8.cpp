@@ -427,7 +427,6 @@ int run(const Options& options)
                          ", one thread; precomputation " + format("%.2f", variant[2].precomputation()) +
                          " s not included");
   csv.close();
-  fs_bench::write_provenance(options.csv, argc, argv);
   std::cout << "\nWritten: " << options.csv << ", " << options.md << ", " << options.svg << std::endl;
   return 0;
 }
@@ -443,7 +442,12 @@ int main(int argc, char** argv)
               << " [--csv FILE] [--md FILE] [--svg FILE]\n";
     return 1;
   }
-  try { return run(options); }
+  try
+  {
+    const int status = run(options);
+    if(status == 0) fs_bench::write_provenance(options.csv, argc, argv);
+    return status;
+  }
   catch(const std::exception& e) { std::cerr << "bench_fig8: " << e.what() << std::endl; }
   return 1;
 }

@@ -37,6 +37,7 @@
 #include "abc_ground_truth.h"
 #include "methods.h"
 #include "report.h"
+#include "scenes.h"
 
 #include "read_input_mesh.h" // the program's reader: the parts are read as a user's files are
 
@@ -362,6 +363,8 @@ struct Cad_result
   std::size_t faces = 0, true_patches = 0;
   double tangent_share = 0;
   std::vector<std::vector<Cad_score> > scores; ///< [noise level][method]
+  std::filesystem::path path;                   ///< the part's file, read again for its scene
+  Part_format format = Part_format::OBJ_LABELS;
 };
 
 /// Reads a part (read_cad_part()) and runs the methods at every noise level.
@@ -371,6 +374,8 @@ inline bool evaluate_cad_part(const std::filesystem::path& path, Part_format for
   Cad_part part;
   if(!read_cad_part(path, format, part, error)) return false;
   result.name = part.name;
+  result.path = path;
+  result.format = format;
   result.set = part_set(format);
   result.faces = part.mesh.number_of_faces();
   result.true_patches = number_of_distinct(part.labels);
@@ -508,6 +513,58 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
   write_and_print(std::filesystem::path(out) / "cad_parts.md", md.str());
 }
 
+/// Writes OUT/scenes/worst_K_NAME.scene (render_scenes' input; scripts/run_evaluation.sh
+/// lays them out in OUT/contact_sheets/cad_worst_five.png) for the `count` parts of the
+/// development and generated sets whose boundary F at the defaults, clean, is lowest:
+/// their ground truth, this package at `options`, sharp edges at 20 degrees and Efficient
+/// RANSAC, each method's patches coloured like the true patches they overlap most.
+inline void write_worst_part_scenes(const std::string& out, const Cad_options& options,
+                                    const std::vector<Cad_result>& results, std::size_t count = 5)
+{
+  const auto clean = std::find(options.noise.begin(), options.noise.end(), 0.);
+  if(clean == options.noise.end()) return; // no clean run to rank the parts by
+  const std::size_t l = std::size_t(clean - options.noise.begin());
+  std::vector<const Cad_result*> parts;
+  for(const Cad_result& r : results)
+    if(r.set == "cad" || r.set == "abc-dev" || r.set == "generated") parts.push_back(&r);
+  std::stable_sort(parts.begin(), parts.end(), [l](const Cad_result* a, const Cad_result* b) {
+    return a->scores[l][0].boundary.f_score < b->scores[l][0].boundary.f_score;
+  });
+  if(parts.size() > count) parts.resize(count);
+  const std::filesystem::path folder = std::filesystem::path(out) / "scenes";
+  std::filesystem::create_directories(folder);
+  for(std::size_t k = 0; k < parts.size(); ++k)
+  {
+    Cad_part part;
+    std::string error;
+    if(!read_cad_part(parts[k]->path, parts[k]->format, part, error))
+    {
+      std::cerr << "evaluate_quality: " << parts[k]->path.string() << ": " << error << std::endl;
+      continue;
+    }
+    const std::vector<std::size_t> truth(part.labels.begin(), part.labels.end());
+    std::vector<double> area(part.mesh.number_of_faces());
+    for(auto f : faces(part.mesh)) area[f.idx()] = PMP::face_area(f, part.mesh);
+    Scene_writer scene((folder / ("worst_" + std::to_string(k + 1) + "_" + part.name + ".scene")).string(),
+                       part.mesh);
+    const auto label = [](const std::string& method, const Segmentation& s, const Cad_score* score) {
+      std::ostringstream text;
+      text << method << ": " << number_of_distinct(s.face_patch) << " patches";
+      if(score) text << ", F " << std::fixed << std::setprecision(3) << score->boundary.f_score;
+      return text.str();
+    };
+    scene.tile_with_patches("ground truth: " + std::to_string(parts[k]->true_patches) + " patches", truth);
+    const Cad_score* scores = parts[k]->scores[l].data(); // cad_methods(): 0 default, 2 sharp20, 5 ransac
+    const std::pair<std::size_t, Segmentation> runs[] = {{0, run_package(part.mesh, options, false)},
+                                                         {2, run_sharp_edges(part.mesh, 20.)},
+                                                         {5, run_efficient_ransac(part.mesh)}};
+    for(const auto& run : runs)
+      scene.tile_with_patches(label(cad_methods()[run.first].second, run.second, &scores[run.first]),
+                              match_to_reference(run.second.face_patch, truth, area));
+    if(!scene.good()) std::cerr << "evaluate_quality: cannot write the scene of " << part.name << std::endl;
+  }
+}
+
 /// The CAD table: evaluates the parts of DATA/cad (NAME.obj), DATA/abc-dev (NAME.obj.gz),
 /// DATA/abc (NAME.obj with NAME.yml) and `generated` (NAME.obj, the gmsh parts made by
 /// the build), each with its ground truth, at every noise level of `options`;
@@ -578,6 +635,7 @@ inline bool run_cad_table(const std::string& data, const std::string& out, const
     else std::cout << "evaluate_quality: " << input.first.string() << " skipped: " << error << std::endl;
   }
   write_cad_tables(out, options, results, machine);
+  write_worst_part_scenes(out, options, results);
   return true;
 }
 
