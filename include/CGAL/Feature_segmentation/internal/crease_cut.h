@@ -15,6 +15,7 @@
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/compact_index.h>
 #include <CGAL/Feature_segmentation/internal/reserve_mesh.h>
+#include <CGAL/Feature_segmentation/internal/cad_tessellation.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
@@ -231,48 +232,6 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, cons
   return angle;
 }
 
-// The share of the surface above which one piece that the creases bound makes a clean
-// tessellation a smooth model rather than a CAD part: the creases of a CAD part cut it
-// into its faces (the largest piece holds 8% to 71% of the area on the clean parts of
-// the evaluation and CGAL's CAD meshes, where the creases are the dihedral angles of 20
-// degrees or more), while a fine or remeshed smooth model, clean too, has a few short
-// creases and keeps one piece of 99% or more (the paper's models remeshed to 200k
-// faces or subdivided by Loop's scheme).
-constexpr double cad_largest_piece_share = 0.9;
-
-// Whether the creases (is_crease non-zero) cut the mesh of `idx` into pieces none of
-// which holds cad_largest_piece_share of the area (`area`: per face).
-template <typename TriangleMesh>
-bool creases_cut_into_faces(const Mesh_indexing<TriangleMesh>& idx, const std::vector<char>& is_crease,
-                            const std::vector<double>& area)
-{
-  const TriangleMesh& tm = idx.mesh();
-  const std::size_t nf = idx.number_of_faces();
-  std::vector<std::size_t> parent(nf);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
-  for(std::size_t e = 0; e < is_crease.size(); ++e)
-  {
-    if(is_crease[e]) continue;
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
-    if(f == idx.npos || g == idx.npos) continue;
-    const std::size_t a = find(f), b = find(g);
-    if(a < b) parent[b] = a; else if(b < a) parent[a] = b;
-  }
-  std::vector<double> piece(nf, 0.);
-  double total = 0., largest = 0.;
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    total += area[f];
-    largest = (std::max)(largest, piece[find(f)] += area[f]);
-  }
-  return largest < cad_largest_piece_share * total;
-}
-
 // The most rounds of filtering a smooth model gets (raw roughness between
 // crease_filter_roughness and crease_gap_raw_roughness). Its roughness is mostly the
 // curvature of the surface, which the filter barely lowers (rockerarm took 32 rounds to
@@ -289,7 +248,7 @@ constexpr int crease_smooth_filter_iterations = 10;
 // discontinuities (mark_tangent_discontinuities), marked 2; a face that these would
 // cut out alone keeps its flattest edge (join_isolated_crease_faces). `angle` receives
 // the filtered angles, `clean` whether the tessellation is clean, `cad` whether it is
-// a clean tessellation of a CAD part (creases_cut_into_faces).
+// a clean tessellation of a CAD part (is_cad_tessellation).
 template <typename TriangleMesh, typename VPM>
 std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle,
                                  int filter_iterations, bool tangent, std::vector<double>& angle, bool& clean,
@@ -321,7 +280,20 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
                         clean ? crease_strong_angle : 360.);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
   join_isolated_crease_faces(idx, angle, is_crease);
-  cad = clean && creases_cut_into_faces(idx, is_crease, area);
+  if(clean)
+  {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+    for(auto v : vertices(idx.mesh()))
+    {
+      const auto& p = get(vpm, v);
+      const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    cad = is_cad_tessellation(idx, is_crease, normal, area, (hi - lo).norm());
+  }
+  else
+    cad = false;
   return is_crease;
 }
 
@@ -362,7 +334,7 @@ struct Crease_cut
   std::vector<char> is_crease;                    // per input edge
   std::size_t number_of_creases = 0;
   bool clean = false;                             // a clean tessellation (normal roughness at most 0.01)
-  bool cad = false;                               // and one of a CAD part (creases_cut_into_faces)
+  bool cad = false;                               // and one of a CAD part (is_cad_tessellation)
   // ids in 32 bits (Compact_index)
   std::vector<Compact_index> input_vertex;        // per working vertex: the input vertex it copies
   std::vector<Compact_index> working_vertex;      // per input vertex: its copy in its first face's sector
