@@ -9,10 +9,14 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m "${1:-$here/build}")"
 "$here/scripts/install_dependencies.sh"
 jobs="$(nproc 2>/dev/null || echo 2)"
+# One compile job more than cores: a core does not idle while the other links.
+build_jobs=$((jobs + 1))
 # The benchmarks are not built: no test runs them (their folder's quality tests are).
+# The test programs and the examples are compiled with -O1 (FAST_TEST_BUILD), the
+# program, the editor and the Python module as users get them.
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFEATURE_SEGMENTATION_BUILD_TESTS=ON \
-  -DFEATURE_SEGMENTATION_BUILD_BENCHMARKS=OFF
-cmake --build "$build" -j "$jobs"
+  -DFEATURE_SEGMENTATION_BUILD_BENCHMARKS=OFF -DFEATURE_SEGMENTATION_FAST_TEST_BUILD=ON
+cmake --build "$build" -j "$build_jobs"
 cd "$build"
 ctest --output-on-failure -j "$jobs"
 
@@ -28,6 +32,6 @@ CXX=clang++ cmake -S "$here" -B "$fuzz_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo 
   -DFEATURE_SEGMENTATION_BUILD_PYTHON=OFF \
   -DFEATURE_SEGMENTATION_BUILD_BENCHMARKS=OFF -DFEATURE_SEGMENTATION_BUILD_DOC=OFF \
   -DFEATURE_SEGMENTATION_FUZZ_SECONDS="${FUZZ_SECONDS:-20}"
-cmake --build "$fuzz_build" -j "$jobs"
+cmake --build "$fuzz_build" -j "$build_jobs"
 cd "$fuzz_build"
 ctest --output-on-failure -j "$jobs"

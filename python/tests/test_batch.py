@@ -94,7 +94,7 @@ def table(path):
     return rows
 
 
-def test_program_and_dask_give_the_same_table(inputs, tmp_path):
+def test_program_and_dask_give_the_same_table(inputs, fandisk_reference, tmp_path):
     # the program's serial run (--jobs 1; script_batch.sh checks that 2 jobs give the same)
     program = subprocess.run([PROGRAM, "batch", str(inputs), "--output-dir", str(tmp_path / "program"), "--jobs", "1",
                               "--quiet"])
@@ -103,7 +103,7 @@ def test_program_and_dask_give_the_same_table(inputs, tmp_path):
     assert len(expected) == 25
     assert sum(r["status"] == "done" for r in expected) == 24
     assert [r["status"] for r in expected if "garbage" in r["mesh"]] == ["failed"]
-    assert next(r for r in expected if r["output"] == "fandisk")["patches"] == "22"
+    assert next(r for r in expected if r["output"] == "fandisk")["patches"] == str(fandisk_reference["patches"])
 
     out = tmp_path / "dask"
     rows = batch.run([str(inputs)], str(out), workers=2, progress=None)
@@ -129,7 +129,7 @@ def test_program_and_dask_give_the_same_table(inputs, tmp_path):
     assert resumed == expected
 
 
-def test_command_line(inputs, tmp_path):
+def test_command_line(inputs, fandisk_reference, tmp_path):
     env = dict(os.environ)
     ok = subprocess.run([sys.executable, "-m", "feature_segmentation.batch", str(inputs / "fandisk.off"),
                          str(inputs / "box_0.off"), "--output-dir", str(tmp_path / "cli"), "--workers", "1",
@@ -138,7 +138,7 @@ def test_command_line(inputs, tmp_path):
     assert ok.returncode == 0, ok.stderr
     assert "progress: [1/2]" in ok.stderr and "s left" in ok.stderr
     rows = table(tmp_path / "cli" / "batch_summary.csv")
-    assert rows[0]["patches"] == "26"  # fandisk with its crest lines at alpha 1: the faces' patches (22 at the defaults)
+    assert rows[0]["patches"] == str(fandisk_reference["patches_alpha_1_with_crest_lines"])
     bad = subprocess.run([sys.executable, "-m", "feature_segmentation.batch", str(inputs / "fandisk.off"),
                           "--output-dir", str(tmp_path / "bad"), "--alpha", "nan"], env=env, capture_output=True,
                          text=True)

@@ -32,14 +32,14 @@ def test_read_mesh_shapes_and_types(fandisk):
     assert f.min() == 0 and f.max() == 6474
 
 
-def test_segment_equals_the_program(fandisk, tmp_path):
+def test_segment_equals_the_program(fandisk, fandisk_reference, tmp_path):
     faces, vertices, result = fs.segment(*fandisk)
     program_faces, program_vertices = program_patches(FANDISK, tmp_path)
     assert np.array_equal(faces, program_faces)
     assert np.array_equal(vertices, program_vertices)
-    assert result.patches == 22 == faces.max() + 1  # its creases and discontinuities, one crest line
-    assert result.faces == 12946 and result.vertices == 6475
-    assert result.crease_edges == 926
+    assert result.patches == fandisk_reference["patches"] == faces.max() + 1
+    assert result.faces == fandisk_reference["faces"] and result.vertices == fandisk_reference["vertices"]
+    assert result.crease_edges == fandisk_reference["crease_edges"]
     assert set(result.seconds) >= {"load", "segmentation"}
 
 
@@ -131,21 +131,22 @@ def test_a_missing_file_raises_file_not_found(tmp_path):
 CREST_LINES = {"crest_lines_on_clean_tessellations": True}
 
 
-def test_edits_and_a_save_that_the_program_replays(fandisk, tmp_path):
+def test_edits_and_a_save_that_the_program_replays(fandisk, fandisk_reference, tmp_path):
     seg = fs.Segmentation(*fandisk, **CREST_LINES)
-    assert seg.patches == 22 and seg.alpha == 0.6
-    assert seg.set_alpha(1.0) == 28
+    assert seg.patches == fandisk_reference["patches"] and seg.alpha == 0.6
+    assert seg.set_alpha(1.0) == fandisk_reference["set_alpha_1_with_crest_lines"]
     patches = seg.face_patches()
     other = int(np.argmax(patches != patches[0]))
-    assert seg.merge(np.array([0, other])) == 27
+    merged = fandisk_reference["merge_after_set_alpha_1"]
+    assert seg.merge(np.array([0, other])) == merged
     assert seg.face_patches()[0] == seg.face_patches()[other]
-    everything = np.arange(12946)
-    assert seg.refine(everything, 0.3) >= 27
-    assert seg.coarsen(everything, 0.3) == 27
+    everything = np.arange(fandisk_reference["faces"])
+    assert seg.refine(everything, 0.3) >= merged
+    assert seg.coarsen(everything, 0.3) == merged
     assert seg.undo() and seg.undo()
-    assert seg.patches == 27
+    assert seg.patches == merged
     assert seg.redo() and seg.redo()  # the refine and the coarsen again
-    assert seg.patches == 27
+    assert seg.patches == merged
     assert not seg.redo()
     assert seg.edits[:2] == ["alpha 1", f"merge faces 0 {other}"]
     with pytest.raises(ValueError, match="out of range"):
@@ -187,7 +188,7 @@ def test_an_edit_that_would_not_replay_is_refused(fandisk, alpha):
     assert seg.edits == []
 
 
-def test_boundaries_feature_lines_and_creases(fandisk):
+def test_boundaries_feature_lines_and_creases(fandisk, fandisk_reference):
     seg = fs.Segmentation(*fandisk, **CREST_LINES)
     curves = seg.boundaries()
     assert curves and all(c.ndim == 2 and c.shape[1] == 3 and len(c) >= 2 for c in curves)
@@ -196,7 +197,7 @@ def test_boundaries_feature_lines_and_creases(fandisk):
     assert length(curves) < length(raw)  # the smoothing shortens them
     lines = seg.feature_lines()
     assert lines and {line["kind"] for line in lines} <= {"ridge", "valley", "user"}
-    assert seg.creases().shape == (926, 2, 3)
+    assert seg.creases().shape == (fandisk_reference["crease_edges"], 2, 3)
 
 
 def test_threads_segment_at_once_with_the_serial_results():

@@ -117,3 +117,7 @@ OFF
 4 3 0 4 7
 EOF
 }
+
+# fandisk_ref KEY: a figure of fandisk at the defaults from data/fandisk.json, the one
+# file the tests of every language read them from (nothing if absent: the check fails).
+fandisk_ref() { json_get "$(dirname "${BASH_SOURCE[0]}")/data/fandisk.json" "$1"; }

@@ -182,36 +182,42 @@ for f in feature_lines.polylines.txt feature_lines.obj segmentation.ply face_pat
 done
 
 # ---- the default run on fandisk --------------------------------------------------------
-# A clean CAD tessellation: its crease edges are 876 creases and the 50 edges of its
-# blends' tangent lines (as test_tangent_discontinuities finds), and its 8 crest lines
-# (3 ridges, 5 valleys) weigh less (alpha - 0.5); the boundaries run along the creases
-# but one, which crosses the curved side along a crest line and is smoothed, and the 22
-# patches are the regions they bound (every one owns faces). The feature files hold the
-# creases and seams as polylines of those 926 edges, and the crest lines; the boundary
-# file the creases between two patches and the smoothed curve.
+# A clean CAD tessellation: its crease edges are its sharp creases and the seams of its
+# blends (curvature discontinuities, as test_tangent_discontinuities finds), and its crest
+# lines weigh less (alpha - 0.5); the boundaries run along the creases and seams but one,
+# which crosses the curved side along a crest line and is smoothed, and the patches are
+# the regions they bound (every one owns faces). The feature files hold the creases and
+# seams as polylines of those edges, and the crest lines; the boundary file the creases
+# between two patches and the smoothed curve. The figures: data/fandisk.json.
+crease_edges="$(fandisk_ref crease_edges)"
+seam_edges="$(fandisk_ref seam_edges)"
+crest_lines="$(fandisk_ref crest_lines)"
+fandisk_patches="$(fandisk_ref patches)"
 run default "$fandisk" --output-dir "$work/default" --quiet
 ds="$work/default/summary.json"
 check "default: exit status 0 (stderr: $(tail -n 1 "$work/default.err"))" [ "$rc" -eq 0 ]
-check "default: 8 crest lines on a clean tessellation ($(json_int "$ds" feature_lines total)), typed ridge or valley" \
-  [ "$(json_int "$ds" feature_lines total)" = 8 -a "$(grep -c -x -e ridge -e valley "$work/default/feature_lines.types.txt")" = 8 ]
+check "default: $crest_lines crest lines on a clean tessellation ($(json_int "$ds" feature_lines total)), typed ridge or valley" \
+  [ "$(json_int "$ds" feature_lines total)" = "$crest_lines" -a \
+    "$(grep -c -x -e ridge -e valley "$work/default/feature_lines.types.txt")" = "$crest_lines" ]
 # a polyline of n points covers n - 1 edges
-check "default: the crease and seam polylines cover the 926 crease edges" \
+check "default: the crease and seam polylines cover the $crease_edges crease edges" \
   [ "$(paste -d' ' "$work/default/feature_lines.types.txt" "$work/default/feature_lines.polylines.txt" |
-       awk '$1 == "crease" || $1 == "seam" { s += $2 - 1 } END { print s }')" = 926 ]
-check "default: the seams are the 50 edges of the blends' tangent lines" \
+       awk '$1 == "crease" || $1 == "seam" { s += $2 - 1 } END { print s }')" = "$crease_edges" ]
+check "default: the seams are the $seam_edges edges of the blends' tangent lines" \
   [ "$(paste -d' ' "$work/default/feature_lines.types.txt" "$work/default/feature_lines.polylines.txt" |
-       awk '$1 == "seam" { s += $2 - 1 } END { print s + 0 }')" = 50 ]
-check "default: 926 crease edges, and the crest lines' edges" \
-  [ "$(json_int "$ds" "" crease_edges)" = 926 -a "$(json_int "$ds" "" feature_edges)" -gt 926 ]
-check "default: 22 patches ($(json_int "$ds" segmentation patches))" [ "$(json_int "$ds" segmentation patches)" = 22 ]
+       awk '$1 == "seam" { s += $2 - 1 } END { print s + 0 }')" = "$seam_edges" ]
+check "default: $crease_edges crease edges, and the crest lines' edges" \
+  [ "$(json_int "$ds" "" crease_edges)" = "$crease_edges" -a "$(json_int "$ds" "" feature_edges)" -gt "$crease_edges" ]
+check "default: $fandisk_patches patches ($(json_int "$ds" segmentation patches))" \
+  [ "$(json_int "$ds" segmentation patches)" = "$fandisk_patches" ]
 check "default: one boundary curve inside faces (smoothed), the others on creases" \
   [ "$(json_int "$ds" boundaries curves)" = 1 -a "$(json_int "$ds" boundaries crease_curves)" -gt 0 -a \
     "$(grep -c -x smoothed "$work/default/boundaries.types.txt")" = 1 -a \
     "$(grep -v -x -c -e crease -e smoothed "$work/default/boundaries.types.txt")" = 0 ]
-check "default: the crease boundaries are polylines of crease edges (at most 926)" \
+check "default: the crease boundaries are polylines of crease edges (at most $crease_edges)" \
   [ "$(paste -d' ' "$work/default/boundaries.types.txt" "$work/default/boundaries.polylines.txt" |
-       awk '$1 == "crease" { s += $2 - 1 } END { print s }')" -le 926 ]
-check "default: face ids cover exactly [0, 22)" ids_cover "$work/default/face_patches.txt" 22
+       awk '$1 == "crease" { s += $2 - 1 } END { print s }')" -le "$crease_edges" ]
+check "default: face ids cover exactly [0, $fandisk_patches)" ids_cover "$work/default/face_patches.txt" "$fandisk_patches"
 check "default: options.crest_lines_on_clean_tessellations false in summary" \
   [ "$(json_get "$ds" options crest_lines_on_clean_tessellations)" = false ]
 check "--crest-lines-on-clean-tessellations: recorded in summary" \

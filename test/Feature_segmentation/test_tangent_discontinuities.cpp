@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include "fandisk_reference.h"
 #include "test_meshes.h"
 
 #include <cmath>
@@ -121,16 +122,20 @@ BOOST_AUTO_TEST_CASE(cylinder_has_no_discontinuity)
 // On fandisk, a clean tessellation cut open along creases, the crest lines weigh less
 // than the creases by default: their alpha_e is alpha - 0.5 (0.1 at the default alpha),
 // a crease's is alpha; crest_lines_on_clean_tessellations(true) gives them the full
-// alpha (the paper's features). Both find the same 8 crest lines.
+// alpha (the paper's features). Both find the same crest lines. The figures (crease and
+// seam edges, crest lines, patches) are those of data/fandisk.json.
 BOOST_AUTO_TEST_CASE(clean_tessellation_crest_lines_weigh_less)
 {
+  using fs_test::fandisk_reference;
   SM m;
   BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m));
   FS::Feature_aligned_segmentation<SM> full(m, FS::parameters::crest_lines_on_clean_tessellations(true)), weak(m);
-  BOOST_TEST(full.number_of_crease_edges() == 926u); // 876 creases and 50 discontinuity edges
+  BOOST_TEST(fandisk_reference("crease_edges") ==
+             fandisk_reference("sharp_crease_edges") + fandisk_reference("seam_edges"));
+  BOOST_TEST(full.number_of_crease_edges() == fandisk_reference("crease_edges"));
   BOOST_TEST(weak.number_of_crease_edges() == full.number_of_crease_edges());
-  BOOST_TEST(full.feature_lines().lines.size() == 8u); // 3 ridges and 5 valleys
-  BOOST_TEST(weak.feature_lines().lines.size() == 8u);
+  BOOST_TEST(full.feature_lines().lines.size() == fandisk_reference("crest_lines"));
+  BOOST_TEST(weak.feature_lines().lines.size() == fandisk_reference("crest_lines"));
   BOOST_TEST(weak.number_of_feature_edges() == full.number_of_feature_edges());
   std::size_t crest_edges = 0, crease_edges = 0;
   for(auto e : edges(m))
@@ -147,7 +152,7 @@ BOOST_AUTO_TEST_CASE(clean_tessellation_crest_lines_weigh_less)
       BOOST_TEST(full.alpha(e) == 0.6, boost::test_tools::tolerance(1e-12));
     }
   }
-  BOOST_TEST(crease_edges == 926u);
+  BOOST_TEST(crease_edges == fandisk_reference("crease_edges"));
   BOOST_TEST(crest_edges > 0u);
   BOOST_TEST(crest_edges + crease_edges <= weak.number_of_feature_edges()); // counted on the working mesh
   // a global alpha edit moves the crest lines' alpha_e with it, 0.5 below
@@ -155,8 +160,7 @@ BOOST_AUTO_TEST_CASE(clean_tessellation_crest_lines_weigh_less)
   for(auto e : edges(m))
     if(weak.is_feature_edge(e) && !weak.is_crease_edge(e))
       BOOST_TEST(weak.alpha(e) == 1.0, boost::test_tools::tolerance(1e-12));
-  // 22 patches: the creases and discontinuities, and one seam of the curved side
-  BOOST_TEST(FS::Feature_aligned_segmentation<SM>(m).number_of_patches() == 22u);
+  BOOST_TEST(FS::Feature_aligned_segmentation<SM>(m).number_of_patches() == fandisk_reference("patches"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

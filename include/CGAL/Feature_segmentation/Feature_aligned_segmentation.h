@@ -215,7 +215,9 @@ public:
     return is_crease_edge(e) || state().features->is_feature_edge[pre().working_edge(e)] != 0;
   }
   /// Whether an edge is a crease: its dihedral angle is at least `crease_angle`, or it is
-  /// a curvature discontinuity (`is_curvature_discontinuity_edge()`).
+  /// a curvature discontinuity (`is_curvature_discontinuity_edge()`), and it separates
+  /// faces at one of its ends at least (a lone edge, whose two ends lie inside the
+  /// surface, cuts nothing and is not a crease).
   bool is_crease_edge(edge_descriptor e) const { return pre().is_crease_edge(e); }
   /// Whether an edge is a crease found as a curvature discontinuity of a clean CAD
   /// tessellation (a seam where a fillet meets a plane without a crease angle; named

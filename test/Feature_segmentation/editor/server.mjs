@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Starts `feature_segmentation edit` on a free port for the editor's tests, and stops it.
 import { spawn } from 'node:child_process';
-import { mkdtempSync } from 'node:fs';
+import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 
 export const program = join(process.env.FS_BINARY_DIR, 'demo/Feature_segmentation/feature_segmentation');
 export const fandisk = join(process.env.FS_MESH_DIR, 'fandisk.off');
+// fandisk's figures at the defaults: ../data/fandisk.json, the file the tests of every
+// language read them from.
+export const fandiskReference = JSON.parse(
+  readFileSync(join(dirname(fileURLToPath(import.meta.url)), '..', 'data', 'fandisk.json'), 'utf8'));
 
 // The paper's interactive editing moves the crest lines' alpha_e: on fandisk, a clean
 // CAD tessellation whose feature lines are by default its creases alone, the tests ask

@@ -9,7 +9,7 @@ import { readFileSync } from 'node:fs';
 import { request } from 'node:http';
 import { connect } from 'node:net';
 import { join } from 'node:path';
-import { startEditor, check, summary, program, fandisk, crestLines } from './server.mjs';
+import { startEditor, check, summary, program, fandisk, crestLines, fandiskReference as ref } from './server.mjs';
 
 const editor = await startEditor();
 const url = editor.url;
@@ -156,7 +156,7 @@ try {
 
   // ---- queries
   const s0 = await state();
-  check('state: fandisk has 22 patches at the defaults', s0.patches === 22, s0.patches);
+  check(`state: fandisk has ${ref.patches} patches at the defaults`, s0.patches === ref.patches, s0.patches);
   check('state: alpha 0.6, no edits, nothing to undo or redo',
         s0.alpha === 0.6 && s0.edits.length === 0 && !s0.can_undo && !s0.can_redo);
   const mesh = (await get('api/mesh')).body;
@@ -164,12 +164,12 @@ try {
         mesh.triangles.length === 3 * 12946 && mesh.vertices.length === 3 * 6475 && s0.triangles === 12946);
   check('mesh: every corner is a vertex index', mesh.triangles.every((i) => i >= 0 && i < 6475));
   const l0 = await labels();
-  check('labels: one patch per triangle and vertex, numbered 0 .. 21',
-        l0.face_patches.length === 12946 && l0.vertex_patches.length === 6475 &&
-        Math.max(...l0.face_patches) === 21 && Math.max(...l0.vertex_patches) === 21);
+  check(`labels: one patch per triangle and vertex, numbered 0 .. ${ref.patches - 1}`,
+        l0.face_patches.length === ref.faces && l0.vertex_patches.length === ref.vertices &&
+        Math.max(...l0.face_patches) === ref.patches - 1 && Math.max(...l0.vertex_patches) === ref.patches - 1);
   const features = (await get('api/features')).body;
-  check('features: crease segments (6 numbers each) for the 926 crease edges',
-        features.creases.length === 6 * s0.crease_edges && s0.crease_edges === 926, s0.crease_edges);
+  check(`features: crease segments (6 numbers each) for the ${ref.crease_edges} crease edges`,
+        features.creases.length === 6 * s0.crease_edges && s0.crease_edges === ref.crease_edges, s0.crease_edges);
   const smooth = (await get('api/boundaries?smooth=1')).body, raw = (await get('api/boundaries?smooth=0')).body;
   check('boundaries: the smoothing shortens them', smooth.curves.length > 0 && smooth.length < raw.length,
         `${raw.length.toFixed(4)} -> ${smooth.length.toFixed(4)}`);
@@ -206,11 +206,12 @@ try {
   check('413 for a body over 8 MB', huge.status === 413, huge.body.error);
   const sBad = await state();
   check('the state after the bad requests is unchanged',
-        sBad.patches === 22 && sBad.edits.length === 0 && sBad.cut_cost === s0.cut_cost);
+        sBad.patches === ref.patches && sBad.edits.length === 0 && sBad.cut_cost === s0.cut_cost);
 
   // ---- every verb
   const a = await post('api/edit', { op: 'alpha', value: 1.0 });
-  check('alpha 1.0: 28 patches, the segmentation\'s count', a.status === 200 && a.body.patches === 28, a.body.patches);
+  check(`alpha 1.0: ${ref.set_alpha_1_with_crest_lines} patches, the segmentation's count`,
+        a.status === 200 && a.body.patches === ref.set_alpha_1_with_crest_lines, a.body.patches);
   check('alpha: the answer is the new state with the edit listed and timed',
         a.body.alpha === 1 && a.body.edits[0] === 'alpha 1' && a.body.last_edit.op === 'alpha' &&
         a.body.last_edit.server_seconds > 0);

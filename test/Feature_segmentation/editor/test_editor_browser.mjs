@@ -2,7 +2,8 @@
 // The editor's page in a real browser: Debian's Chromium, headless, driven by
 // playwright-core (from npm, pinned by the editor's package-lock.json). Loads the page on
 // fandisk, checks that the canvas draws the mesh, moves the alpha slider and sees the
-// patch count change (22 -> 28 at alpha 1), merges two patches
+// patch count change (data/fandisk.json: patches, then set_alpha_1_with_crest_lines at
+// alpha 1), merges two patches
 // with a Ctrl-drag stroke and sees the count drop, undoes; a page of another origin, open
 // in the same browser (so with the editor's cookie), tries to read and drive the editor
 // (a fetch, a no-cors fetch, a form) and cannot; then it saves a screenshot for
@@ -12,7 +13,9 @@ import { existsSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { createRequire } from 'node:module';
 import { join } from 'node:path';
-import { startEditor, check, summary } from './server.mjs';
+import { startEditor, check, summary, fandiskReference as ref } from './server.mjs';
+
+const atAlpha1 = String(ref.set_alpha_1_with_crest_lines);
 
 const browserPath = process.env.FS_CHROMIUM || '/usr/bin/chromium';
 if (!existsSync(browserPath)) {
@@ -75,7 +78,7 @@ try {
   await evil.close();
   attacker.close();
 
-  check('the page loads and shows 22 patches', (await patches()) === 22);
+  check(`the page loads and shows ${ref.patches} patches`, (await patches()) === ref.patches);
 
   // the canvas draws the mesh: many non-white pixels in many colours
   const drawn = await page.evaluate(() => {
@@ -98,8 +101,8 @@ try {
 
   // alpha slider to 1.0
   await page.$eval('#alpha', (el) => { el.value = '1'; el.dispatchEvent(new Event('change')); });
-  await page.waitForFunction(() => document.querySelector('#patches').textContent === '28', null, { timeout: 30000 });
-  check('moving the alpha slider to 1 gives 28 patches', (await patches()) === 28);
+  await page.waitForFunction((n) => document.querySelector('#patches').textContent === n, atAlpha1, { timeout: 30000 });
+  check(`moving the alpha slider to 1 gives ${atAlpha1} patches`, (await patches()) === ref.set_alpha_1_with_crest_lines);
   const lastEdit = await page.textContent('#last-edit');
   check('the time of the last edit is shown', /^alpha: [0-9.]+ ms$/.test(lastEdit), lastEdit);
 
@@ -113,17 +116,17 @@ try {
   for (let i = 1; i <= 30; ++i) await page.mouse.move(...at(i / 30));
   await page.mouse.up();
   await page.keyboard.up('Control');
-  await page.waitForFunction(() => document.querySelector('#patches').textContent !== '28', null, { timeout: 30000 });
+  await page.waitForFunction((n) => document.querySelector('#patches').textContent !== n, atAlpha1, { timeout: 30000 });
   const merged = await patches();
-  check('a Ctrl-drag stroke merges patches', merged < 28, `${merged} patches`);
+  check('a Ctrl-drag stroke merges patches', merged < ref.set_alpha_1_with_crest_lines, `${merged} patches`);
   const state = await page.evaluate(() => window.editor.current);
   check('the stroke arrived as one merge edit', state.edits[state.edits.length - 1].startsWith('merge triangles '));
 
   // undo with the button
   await page.click('#undo');
-  await page.waitForFunction(() => document.querySelector('#patches').textContent === '28', null, { timeout: 30000 });
+  await page.waitForFunction((n) => document.querySelector('#patches').textContent === n, atAlpha1, { timeout: 30000 });
   await page.waitForFunction(() => window.editor.inflight === 0, null, { timeout: 30000 });
-  check('undo gives the 28 patches back', (await patches()) === 28);
+  check(`undo gives the ${atAlpha1} patches back`, (await patches()) === ref.set_alpha_1_with_crest_lines);
 
   // Shift-drag paints a region; Refine sends it as a local edit
   await page.keyboard.down('Shift');

@@ -315,8 +315,8 @@ struct Crease_tie
 // A curvature discontinuity (mark_tangent_discontinuities) is tied as a crease of this
 // many times the crease angle. At 1 (20 degrees by default) the ties of the small
 // blends of fandisk are weak enough that the ordering of the vertices decides whether
-// a blend stays a patch (22 patches, or 21 on its flat subdivision); at 2 both meshes
-// give the same 22 patches, and the CAD parts the same scores (manual, Creases).
+// a blend stays a patch (fandisk and its flat subdivision differ by one patch); at 2
+// both meshes give the same patches, and the CAD parts the same scores (manual, Creases).
 constexpr double tangent_crease_equivalent = 2.;
 
 // The width, relative to the largest side of the bounding box, over which a crease's
@@ -509,9 +509,11 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
     const std::size_t ends[2][2] = {
       { corner_working[corner_of_halfedge[idx.halfedge_id(h)]], corner_working[corner_of_halfedge[idx.halfedge_id(prev(o, tm))]] },
       { corner_working[corner_of_halfedge[idx.halfedge_id(o)]], corner_working[corner_of_halfedge[idx.halfedge_id(prev(h, tm))]] } };
+    bool tied = false;
     for(const auto& end : ends)
     {
       if(end[0] == end[1]) continue; // a crease end inside a sector: nothing to tie
+      tied = true;
       Crease_tie t;
       t.a = (std::min)(end[0], end[1]);
       t.b = (std::max)(end[0], end[1]);
@@ -520,7 +522,11 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
       t.similarity = half / (1. + gamma * s);
       cut.ties.push_back(t);
     }
+    // a lone crease edge, both ends inside a sector, separates nothing: it is no crease
+    // (the working mesh keeps it as an ordinary edge)
+    if(!tied) cut.is_crease[e] = 0;
   }
+  cut.number_of_creases = ne - std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 0));
 }
 
 } // namespace internal
