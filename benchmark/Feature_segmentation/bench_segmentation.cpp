@@ -21,6 +21,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Feature_segmentation/defaults.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/crest_lines.h>
 #include <CGAL/Feature_segmentation/edge_weights.h>
@@ -70,7 +71,7 @@ struct Options
 {
   std::string data;
   std::string csv = "bench_segmentation.csv";
-  double alpha = 0.6;
+  double alpha = CGAL::Feature_segmentation::default_alpha;
   std::size_t target_faces = 200000;
   std::size_t repeat = 1;
 };

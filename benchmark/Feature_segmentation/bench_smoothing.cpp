@@ -16,6 +16,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Feature_segmentation/defaults.h>
 #include <CGAL/Feature_segmentation/boundary_curves.h>
 #include <CGAL/Feature_segmentation/face_patches.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
@@ -48,7 +49,7 @@ struct Options
 {
   std::string data;
   std::string csv = "bench_smoothing.csv";
-  double alpha = 0.6;
+  double alpha = CGAL::Feature_segmentation::default_alpha;
   int iterations = 20;
   int repeat = 3;
 };

@@ -32,6 +32,8 @@
 
 #include "number_text.h"
 
+#include <CGAL/Feature_segmentation/defaults.h>
+
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -83,7 +85,7 @@ struct Edit_script
 };
 
 /// The sketch alpha when a `sketch` line gives none (the library's default).
-constexpr double default_sketch_alpha = 2.0;
+using CGAL::Feature_segmentation::default_sketch_alpha;
 
 /// The largest magnitude of an edit's value (alpha, amount, factor, sketch alpha), and the
 /// smallest of a nonzero one: outside, the weights or the cut cost overflow, or the edit's

@@ -79,17 +79,16 @@ struct Options
   bool ridges = true;
   bool valleys = true;
   std::string feature_edges_file;           // empty: none
-  // The library's defaults for alpha and gamma (segment_along_features()).
-  double alpha = CGAL::Feature_segmentation::internal::Segmentation_options().alpha;
-  double gamma = CGAL::Feature_segmentation::internal::Segmentation_options().gamma;
-  double crease_angle = CGAL::Feature_segmentation::internal::Segmentation_options().crease_angle;
-  // most rounds of normal filtering before creases: the library's default
-  int crease_filter = CGAL::Feature_segmentation::internal::Segmentation_options().crease_filter_iterations;
-  // clean tessellations: crest lines too, and cuts along curvature discontinuities (the
-  // library's defaults)
-  bool crest_lines_on_clean_tessellations =
-    CGAL::Feature_segmentation::internal::Segmentation_options().crest_lines_on_clean_tessellations;
-  bool tangent_discontinuities = CGAL::Feature_segmentation::internal::Segmentation_options().tangent_discontinuities;
+  // The library's defaults (defaults.h)
+  double alpha = CGAL::Feature_segmentation::default_alpha;
+  double gamma = CGAL::Feature_segmentation::default_gamma;
+  double crease_angle = CGAL::Feature_segmentation::default_crease_angle;
+  // most rounds of normal filtering before creases
+  int crease_filter = CGAL::Feature_segmentation::default_crease_filter_iterations;
+  // clean tessellations of CAD parts: crest lines at the full alpha, and cuts along
+  // curvature discontinuities
+  bool crest_lines_on_clean_tessellations = CGAL::Feature_segmentation::default_crest_lines_on_clean_tessellations;
+  bool tangent_discontinuities = CGAL::Feature_segmentation::default_tangent_discontinuities;
   std::string solver = "gaec+klj";
   bool full_graph = false;
   std::string watershed = "anisotropic";

@@ -72,11 +72,11 @@ namespace fs_evaluation {
 struct Cad_options
 {
   std::vector<double> noise = {0., 0.001, 0.003}; ///< standard deviations, fractions of the diagonal
-  int crease_filter = FS::internal::Segmentation_options().crease_filter_iterations;
-  double alpha = FS::internal::Segmentation_options().alpha;
+  int crease_filter = FS::default_crease_filter_iterations;
+  double alpha = FS::default_alpha;
   double strength_threshold = FS::default_strength_threshold;
-  bool tangent = FS::internal::Segmentation_options().tangent_discontinuities;
-  bool crest_lines = FS::internal::Segmentation_options().crest_lines_on_clean_tessellations;
+  bool tangent = FS::default_tangent_discontinuities;
+  bool crest_lines = FS::default_crest_lines_on_clean_tessellations;
 };
 
 /// The settings of the first column, for the reports.

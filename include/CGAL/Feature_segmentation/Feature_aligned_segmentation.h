@@ -307,7 +307,7 @@ public:
   /// \param sketch the polyline, at least two points
   /// \param sketch_alpha the `alpha_e` of the crossed edges, finite and > 1
   /// \return the new number of patches
-  std::size_t add_sketch(const std::vector<Sketch_point>& sketch, double sketch_alpha = 2.0)
+  std::size_t add_sketch(const std::vector<Sketch_point>& sketch, double sketch_alpha = default_sketch_alpha)
   {
     if(!(sketch_alpha > 1) || !std::isfinite(sketch_alpha))
       throw Invalid_input("sketch_alpha must be a finite number > 1 (got " + std::to_string(sketch_alpha) + ")");

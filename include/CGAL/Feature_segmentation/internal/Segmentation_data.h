@@ -11,6 +11,7 @@
 
 #include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
 #include <CGAL/Feature_segmentation/Feature_lines.h>
+#include <CGAL/Feature_segmentation/defaults.h>
 #include <CGAL/Feature_segmentation/input_checks.h>
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/compact_index.h>
@@ -33,24 +34,22 @@ namespace internal {
 // Every option of the segmentation, parsed once from the named parameters.
 struct Segmentation_options
 {
-  double alpha = 0.6;
-  double gamma = 0.05;
-  // degrees; >= 180: no creases (the paper's pipeline, crest lines only). 20 degrees
-  // by default: on the 14 CAD parts of the evaluation no edge bends by 15 to 30 degrees
-  // apart from the creases, and the gap test keeps the strong bends of smooth surfaces
-  // out (see the manual, Creases).
-  double crease_angle = 20.;
+  double alpha = default_alpha;
+  double gamma = default_gamma;
+  // degrees; >= 180: no creases (the paper's pipeline, crest lines only); the gap test
+  // keeps the strong bends of smooth surfaces out (see the manual, Creases)
+  double crease_angle = default_crease_angle;
   // rounds of bilateral filtering of the face normals before the creases are detected;
   // a clean mesh (normal roughness at most 0.01) is not filtered at all (0: the raw
   // dihedral angles everywhere)
-  int crease_filter_iterations = 40;
+  int crease_filter_iterations = default_crease_filter_iterations;
   // on a clean tessellation, the curvature discontinuities (a fillet meeting a plane
   // without a crease) join the creases (see the manual, Creases)
-  bool tangent_discontinuities = true;
+  bool tangent_discontinuities = default_tangent_discontinuities;
   // crest lines also on a clean tessellation cut open along creases, as the paper; by
   // default its feature lines are its creases and curvature discontinuities, which bound
   // its B-rep faces (crest lines cut curved faces apart: see the manual, CAD Parts)
-  bool crest_lines_on_clean_tessellations = false;
+  bool crest_lines_on_clean_tessellations = default_crest_lines_on_clean_tessellations;
   // set by the class, not by a parameter: whether prepare_segmentation_data detects
   // crest lines when no feature is given
   bool detect_crest_lines = true;
