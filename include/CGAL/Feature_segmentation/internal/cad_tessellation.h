@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Whether a clean tessellation (no noise: crease_cut.h) is one of a CAD part, whose
+// Whether a clean tessellation (no noise: crease_detection.h) is one of a CAD part, whose
 // creases and curvature discontinuities bound its faces, or a finely tessellated smooth
 // model, whose crest lines are its features (edit_precomputation.h).
 
