@@ -1,8 +1,8 @@
 // The scale of the features is a length, not a ring count: the same shape tessellated
 // finer gives the same patches. CGAL's fandisk against its flat subdivision (each
 // triangle into 16, same geometry): with rings alone, the fits on the fine mesh see the
-// flat facets of the coarse one and the kinks between them (crest lines: 9 on the
-// coarse mesh, 42 on the fine one); with the default radius they see the same surface.
+// flat facets of the coarse one and the kinks between them (with its crest lines at the
+// full alpha: 7 on the coarse mesh, 36 on the fine one; 26 with the default radius).
 // The curvature discontinuities (the tangent lines of fandisk's blends) are a rule on
 // flat regions, areas and angles (fandisk has no flat region of one or two triangles at
 // a bend), and the gap test of the creases measures lengths inside a ball, so the fine
