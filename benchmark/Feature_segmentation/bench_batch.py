@@ -4,12 +4,14 @@
 (python3 -m feature_segmentation.batch, a local cluster) at 1 and 2 workers, on CGAL's
 demo meshes (BUILD_DIR/data/meshes) plus, when present, the 14 CAD parts of
 $FEATURE_SEGMENTATION_DATA/cad (or --data DIR). Every run is --force (no mesh skipped);
-prints a table (meshes per minute, faces per second, wall seconds) and writes CSV.
+prints a table (meshes per minute, faces per second, wall seconds) and writes CSV, with
+its provenance (program, arguments, machine, date) in NAME.provenance.txt beside it.
 
 Usage: PYTHONPATH=BUILD_DIR/python bench_batch.py --build BUILD_DIR [--data DIR] [--out FILE]
 """
 import argparse
 import csv
+import datetime
 import glob
 import os
 import platform
@@ -72,7 +74,12 @@ def main():
         w = csv.writer(f)
         w.writerow(["runner", "workers", "meshes", "failed", "faces", "seconds", "meshes_per_minute", "faces_per_second"])
         w.writerows(rows)
-    print(f"\nCSV: {a.out}")
+    provenance = os.path.splitext(a.out)[0] + ".provenance.txt"
+    with open(provenance, "w") as f:
+        f.write(f"program: bench_batch.py\narguments: {' '.join(sys.argv[1:])}\n"
+                f"machine: {cpu_name()}, {os.cpu_count()} cores\n"
+                f"date: {datetime.datetime.now(datetime.timezone.utc).date().isoformat()}\n")
+    print(f"\nCSV: {a.out} (provenance: {provenance})")
 
 
 if __name__ == "__main__":

@@ -238,6 +238,17 @@ def perf_mesh_input():
                     ["---"] + ["---:"] * 6) + "\n\n" + source_line(name)
 
 
+def perf_batch():
+    name = "batch.csv"
+    rows = read_csv(name)
+    body = [["`feature_segmentation batch`" if r["runner"] == "program batch" else "Dask, local cluster",
+             r["workers"], r["meshes"], count(r["faces"]), f"{float(r['seconds']):.1f}",
+             count(f"{float(r['meshes_per_minute']):.0f}"), count(f"{float(r['faces_per_second']):.0f}")]
+            for r in rows]
+    return markdown(["runner", "workers", "meshes", "faces", "seconds", "meshes per minute", "faces per second"],
+                    body, ["---"] + ["---:"] * 6) + "\n\n" + source_line(name)
+
+
 # ---- Quality ------------------------------------------------------------------------
 
 def quality_nut():
@@ -394,6 +405,7 @@ TABLES = {
     "perf_editor_session": perf_editor_session,
     "perf_scaling": perf_scaling,
     "perf_mesh_input": perf_mesh_input,
+    "perf_batch": perf_batch,
     "quality_nut": quality_nut,
     "quality_coverage": quality_coverage,
     "quality_resolution": quality_resolution,
