@@ -2,8 +2,9 @@
 // Faces that the creases would cut out alone. On a coarse CAD tessellation (a small hole
 // of a few segments, the fan of triangles where a fillet ends in a corner) a triangle can
 // bend by more than the crease angle from each of its three neighbours (or, at a border,
-// from each neighbour it has); cut along them it would be a patch of one face, which no B-rep face of the development data is
-// (none of the 30 parts' ground-truth patches is a single triangle). One face is no
+// from each neighbour it has); cut along them it would be a patch of one face, which no
+// B-rep face of the development data is (none of the 30 parts' ground-truth patches is a
+// single triangle). One face is no
 // evidence of a surface of its own: it stays with the neighbour it bends least from.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_ISOLATED_CREASE_FACES_H
@@ -22,9 +23,10 @@ namespace internal {
 
 // Clears, for every face of the mesh of `idx` whose edges are all creases (nonzero in
 // `is_crease`) or border edges, at least one a crease, the crease flag of its crease edge
-// of smallest dihedral angle `angle` (the first such edge around the face on a tie). Faces are visited in index order, and a
-// cleared edge no longer isolates the face across it, so the result does not depend on
-// anything but the indexing. Returns the number of edges cleared.
+// of smallest dihedral angle `angle` (the first such edge around the face on a tie).
+// Faces are visited in index order, and a cleared edge no longer isolates the face
+// across it, so the result does not depend on anything but the indexing. Returns the
+// number of edges cleared.
 template <typename TriangleMesh>
 std::size_t join_isolated_crease_faces(const Mesh_indexing<TriangleMesh>& idx, const std::vector<double>& angle,
                                        std::vector<char>& is_crease)
