@@ -7,6 +7,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CAD_TESSELLATION_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/face_components.h>
 
 #include <CGAL/number_utils.h>
 
@@ -14,7 +15,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -45,33 +45,18 @@ template <typename TriangleMesh, typename Cut>
 double piece_share(const Mesh_indexing<TriangleMesh>& idx, const std::vector<double>& area, Cut cut,
                    double least_area, bool sum)
 {
-  const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces();
-  std::vector<std::size_t> parent(nf);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-  {
-    if(cut(e)) continue;
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
-    if(f == idx.npos || g == idx.npos) continue;
-    const std::size_t a = find(f), b = find(g);
-    if(a < b) parent[b] = a; else if(b < a) parent[a] = b;
-  }
+  const std::vector<std::size_t> component = face_components(idx, [&cut](std::size_t e) { return !cut(e); });
   std::vector<double> piece(nf, 0.);
   double total = 0.;
   for(std::size_t f = 0; f < nf; ++f)
   {
     total += area[f];
-    piece[find(f)] += area[f];
+    piece[component[f]] += area[f];
   }
   double share = 0.;
   for(std::size_t f = 0; f < nf; ++f)
-    if(parent[f] == f && piece[f] >= least_area) share = sum ? share + piece[f] : (std::max)(share, piece[f]);
+    if(component[f] == f && piece[f] >= least_area) share = sum ? share + piece[f] : (std::max)(share, piece[f]);
   return total > 0 ? share / total : 0.;
 }
 
@@ -86,11 +71,10 @@ bool is_cad_tessellation(const Mesh_indexing<TriangleMesh>& idx, const std::vect
   const auto creased = [&](std::size_t e) { return is_crease[e] != 0; };
   if(piece_share(idx, area, creased, 0., false) < cad_largest_piece_share) return true;
   const TriangleMesh& tm = idx.mesh();
-  const auto not_planar = [&](std::size_t e) {
+  const auto not_planar = [&](std::size_t e) { // asked of interior edges only
     const auto h = halfedge(idx.edge_at(e), tm);
-    const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
-    return f == idx.npos || g == idx.npos ||
-           (normal[f] - normal[g]).squaredNorm() >= cad_planar_difference * cad_planar_difference;
+    return (normal[idx.face_id(h)] - normal[idx.face_id(opposite(h, tm))]).squaredNorm() >=
+           cad_planar_difference * cad_planar_difference;
   };
   return piece_share(idx, area, not_planar, CGAL::square(cad_planar_side * diagonal), true) >= cad_planar_share;
 }

@@ -269,8 +269,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
                         clean ? crease_strong_angle : 360.);
-  if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, is_crease);
-  join_isolated_crease_faces(idx, angle, is_crease);
+  double diagonal = 0.; // of the bounding box, for the rules of clean tessellations
   if(clean)
   {
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
@@ -281,10 +280,11 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
-    cad = is_cad_tessellation(idx, is_crease, normal, area, (hi - lo).norm());
+    diagonal = (hi - lo).norm();
   }
-  else
-    cad = false;
+  if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
+  join_isolated_crease_faces(idx, angle, is_crease);
+  cad = clean && is_cad_tessellation(idx, is_crease, normal, area, diagonal);
   return is_crease;
 }
 

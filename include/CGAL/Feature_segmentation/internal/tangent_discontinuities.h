@@ -17,14 +17,12 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_TANGENT_DISCONTINUITIES_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/face_components.h>
 
 #include <CGAL/boost/graph/helpers.h>
 
-#include <Eigen/Dense>
-
 #include <cmath>
 #include <cstddef>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -63,11 +61,12 @@ struct Tangent_thresholds
 
 // Marks with 2 in `is_crease` the non-crease edges of the mesh of `idx` that are
 // curvature discontinuities (file comment); `angle`: the dihedral angles (degrees) of
-// the raw face normals, `area`: the face areas. Meant for clean tessellations only
+// the raw face normals, `area`: the face areas, `diagonal`: the bounding box's. Meant
+// for clean tessellations only
 // (noise splits every flat region into single faces, which the rule then ignores).
 template <typename TriangleMesh, typename VPM>
 void mark_tangent_discontinuities(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
-                                  const std::vector<double>& area, std::vector<char>& is_crease)
+                                  const std::vector<double>& area, double diagonal, std::vector<char>& is_crease)
 {
   typedef Tangent_thresholds Limits;
   const TriangleMesh& tm = idx.mesh();
@@ -81,37 +80,17 @@ void mark_tangent_discontinuities(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   }
   auto interior = [&](std::size_t e) { return face0[e] != idx.npos && face1[e] != idx.npos; };
 
-  // flat regions: union-find over the flat interior edges, smallest index as the root
-  std::vector<std::size_t> parent(nf);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
-  for(std::size_t e = 0; e < ne; ++e)
-    if(interior(e) && !is_crease[e] && angle[e] < Limits::flat_angle)
-    {
-      const std::size_t a = find(face0[e]), b = find(face1[e]);
-      if(a < b) parent[b] = a; else if(b < a) parent[a] = b;
-    }
-  std::vector<std::size_t> region(nf);
+  // flat regions, each named by its smallest face index
+  const std::vector<std::size_t> region =
+    face_components(idx, [&](std::size_t e) { return !is_crease[e] && angle[e] < Limits::flat_angle; });
   std::vector<double> region_area(nf, 0.), bend(nf, 0.);
   std::vector<std::size_t> region_faces(nf, 0);
   for(std::size_t f = 0; f < nf; ++f)
   {
-    region[f] = find(f);
     region_area[region[f]] += area[f];
     ++region_faces[region[f]];
   }
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-  for(auto v : vertices(tm))
-  {
-    const auto& p = get(vpm, v);
-    const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double least_area = CGAL::square(Limits::least_flat_side * (hi - lo).norm());
+  const double least_area = CGAL::square(Limits::least_flat_side * diagonal);
   std::vector<double> length(ne, 0.);
   for(std::size_t e = 0; e < ne; ++e)
   {
