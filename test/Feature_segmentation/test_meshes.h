@@ -230,7 +230,11 @@ struct Lobed_torus
 {
   double R = 3., r0 = 1., eps = 0.12;
   int lobes = 4;
-  double rho(double phi) const { return r0 * (1 + eps * std::cos(lobes * phi)); }
+  // The crest and trough circles are at phi = phase + k pi / lobes. At phase 0 they run
+  // through rings of vertices of the soups below, where the extremality is zero up to
+  // round-off; a phase of half a ring step puts them midway between two rings.
+  double phase = 0.;
+  double rho(double phi) const { return r0 * (1 + eps * std::cos(lobes * (phi - phase))); }
   std::array<double, 3> point(double theta, double phi) const
   {
     const double q = R + rho(phi) * std::cos(phi);
@@ -250,7 +254,7 @@ struct Lobed_torus
     double best = 1e300;
     for(int j = 0; j < lobes; ++j)
     {
-      const double phi = (ridges ? 2 * M_PI * j : M_PI * (2 * j + 1)) / lobes;
+      const double phi = phase + (ridges ? 2 * M_PI * j : M_PI * (2 * j + 1)) / lobes;
       const double cq = R + rho(phi) * std::cos(phi), cz = rho(phi) * std::sin(phi);
       best = std::min(best, std::hypot(q - cq, p[2] - cz));
     }

@@ -143,8 +143,7 @@ BOOST_AUTO_TEST_CASE(saddle_polyhedron) { saddle_test<Poly>(); }
 // (30 degrees) keeps out the rim's vertices (normals at 45 degrees) and the side walls
 // (90): every top vertex three rings or more from the rim sees a plane, curvature 0.
 // Without the cone, vertices 3 to 5 rings in fitted the walls and bent.
-// At 0.2 of the diagonal (0.28; no edge is longer than the top's diagonals, 0.035, so
-// radius / (4 mean edges) is over 2 and the clusters hold 4 vertices or more) the search
+// Both radii (about 5 and 10 mean edges) span more than 3 mean edges, so the search
 // beyond the rings goes over clusters of vertices, which the cone keeps out of the walls
 // in the same way.
 void thin_wall_test(double radius)
@@ -187,9 +186,9 @@ BOOST_AUTO_TEST_CASE(radius_keeps_the_sphere_round)
 
 // A radius of many rings: 0.05 of the diagonal is 0.35 on the sphere of radius 2 at
 // level 6 (81,920 faces), 9 mean edges, so the search beyond the rings goes over
-// clusters of 5 vertices, each standing for its first. The fit still gives 1/r: measured
-// 0.0056 at worst, against 0.0055 vertex by vertex (and 0.0060 at level 5, where 0.05 of
-// the diagonal spans 4.6 edges and the search is vertex by vertex).
+// clusters of 18 vertices (the ball holds about 3.6 x 9^2 vertices, 16 clusters), each
+// standing for its first. The fit still gives 1/r: measured 0.0057 at worst, against
+// 0.0055 vertex by vertex.
 BOOST_AUTO_TEST_CASE(radius_over_clusters_keeps_the_sphere_round)
 {
   SM m = fs_test::to_mesh<SM>(fs_test::icosphere(2., 6));

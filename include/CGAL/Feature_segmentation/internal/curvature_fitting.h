@@ -162,14 +162,15 @@ public:
   static constexpr std::size_t max_fit_points = 32;
 
   // On a mesh so fine that the radius spans many rings, the search beyond the rings
-  // goes over clusters of vertices (Vertex_clusters) about radius / cluster_spacing
-  // across, each standing for its first vertex: the thinned neighbourhood is then found
-  // in a time that does not grow with the resolution (the ball of a 5M-face part holds
-  // some 400 vertices). Below min_cluster_size vertices per cluster (the radius under
-  // about 8 mean edge lengths: every model of the evaluation, fandisk to 828k faces) the
-  // search stays vertex by vertex.
-  static constexpr double cluster_spacing = 4.;
-  static constexpr std::size_t min_cluster_size = 4;
+  // goes over clusters of vertices (Vertex_clusters), each standing for its first vertex,
+  // sized so that the ball holds about cluster_budget of them: the neighbourhood is then
+  // found in a time that does not grow with the resolution. A regular tessellation has
+  // about 3.6 (radius / mean edge length)^2 vertices within the radius; clusters are used
+  // from min_cluster_size vertices each (a radius of 3 mean edge lengths or more: fandisk
+  // subdivided to 828k faces and finer), below that the search goes vertex by vertex.
+  static constexpr double vertices_per_squared_radius = 3.6;
+  static constexpr double cluster_budget = 16.;
+  static constexpr std::size_t min_cluster_size = 2;
 
   // `parallel`: the vertices are fitted by TBB's threads (CGAL_LINKED_WITH_TBB), each
   // with its own work space; every vertex's fit is the same at any thread count.
@@ -181,9 +182,10 @@ public:
     m_clusters = Vertex_clusters();
     if(radius > 0 && m_geom.mean_edge_length > 0)
     {
-      const double across = radius / (cluster_spacing * m_geom.mean_edge_length);
-      if(across * across >= double(min_cluster_size))
-        m_clusters.build(m_adj_begin, m_adj, static_cast<std::size_t>(across * across));
+      const double across = radius / m_geom.mean_edge_length;
+      const double size = vertices_per_squared_radius * across * across / cluster_budget;
+      if(size >= double(min_cluster_size))
+        m_clusters.build(m_adj_begin, m_adj, static_cast<std::size_t>(size));
     }
     auto fit_range = [&](std::size_t first, std::size_t last, Work_space& ws) {
       if(ws.stamp.size() != nv) ws.stamp.assign(nv, std::size_t(-1));
@@ -191,7 +193,7 @@ public:
       for(std::size_t v = first; v < last; ++v)
       {
         collect_neighborhood(v, rings, radius * radius, ws, ws.neighborhood);
-        fit_vertex(v, ws.neighborhood, ws);
+        fit_vertex(v, ws.neighborhood);
       }
     };
 #ifdef CGAL_LINKED_WITH_TBB
@@ -344,15 +346,13 @@ private:
   // to neighbour positions (one equation each) and normals (two equations each) in the
   // frame of the vertex normal, in coordinates scaled by the neighbourhood size.
   // The work space of one thread: the visit stamps and neighbourhood of
-  // collect_neighborhood(), the least-squares rows of fit_vertex().
+  // collect_neighborhood().
   struct Work_space
   {
     std::vector<std::size_t> stamp, neighborhood, cluster_stamp, cluster_queue;
-    Eigen::Matrix<double, Eigen::Dynamic, 7> rows;
-    Eigen::VectorXd rhs;
   };
 
-  void fit_vertex(std::size_t v, const std::vector<std::size_t>& nbh, Work_space& ws)
+  void fit_vertex(std::size_t v, const std::vector<std::size_t>& nbh)
   {
     const Vec3& n = m_geom.vertex_normals[v];
     if(n.squaredNorm() == 0 || nbh.size() < 2)
@@ -367,33 +367,36 @@ private:
       return;
     const bool cubic = nbh.size() >= 4;
     const int nu = cubic ? 7 : 3;
-    // rows of the least-squares system (one per position, two per usable normal),
-    // multiplied out at once: A^T A as a symmetric rank update
-    ws.rows.resize(Eigen::Index(3 * nbh.size()), 7);
-    ws.rhs.resize(Eigen::Index(3 * nbh.size()));
-    Eigen::Index r = 0;
+    // the normal equations A^T A c = A^T b of the least-squares system (one row per
+    // position, two per usable normal), summed row by row into the lower triangle
+    double lower[7][8] = {}; // column 7: A^T b
+    auto add_row = [&lower, nu](const double (&row)[8]) {
+      for(int i = 0; i < nu; ++i)
+      {
+        for(int j = 0; j <= i; ++j) lower[i][j] += row[i] * row[j];
+        lower[i][7] += row[i] * row[7];
+      }
+    };
     for(std::size_t q : nbh)
     {
       const Vec3 d = (m_geom.points[q] - p0) / h;
       const double x = d.dot(u), y = d.dot(w), z = d.dot(n);
-      ws.rows.row(r) << 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y;
-      ws.rhs(r++) = z;
+      add_row({ 0.5 * x * x, x * y, 0.5 * y * y, x * x * x, x * x * y, x * y * y, y * y * y, z });
       const Vec3& nq = m_geom.vertex_normals[q];
       const double nz = nq.dot(n);
       if(nz > 0.2) // normals folded past ~78 degrees say nothing reliable about slopes
       {
-        ws.rows.row(r) << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
-        ws.rhs(r++) = -nq.dot(u) / nz;
-        ws.rows.row(r) << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
-        ws.rhs(r++) = -nq.dot(w) / nz;
+        add_row({ x, y, 0, 3 * x * x, 2 * x * y, y * y, 0, -nq.dot(u) / nz });
+        add_row({ 0, x, y, 0, x * x, 2 * x * y, 3 * y * y, -nq.dot(w) / nz });
       }
     }
-    const auto A = ws.rows.topRows(r);
-    if(!cubic) ws.rows.topRows(r).template rightCols<4>().setZero();
     Eigen::Matrix<double, 7, 7> AtA = Eigen::Matrix<double, 7, 7>::Zero();
-    AtA.selfadjointView<Eigen::Lower>().rankUpdate(A.transpose());
-    AtA.triangularView<Eigen::StrictlyUpper>() = AtA.transpose();
-    const Eigen::Matrix<double, 7, 1> Atb = A.transpose() * ws.rhs.head(r);
+    Eigen::Matrix<double, 7, 1> Atb = Eigen::Matrix<double, 7, 1>::Zero();
+    for(int i = 0; i < nu; ++i)
+    {
+      for(int j = 0; j <= i; ++j) AtA(i, j) = AtA(j, i) = lower[i][j];
+      Atb(i) = lower[i][7];
+    }
     // A small ridge term keeps the system well posed when the neighbourhood is nearly
     // collinear; it is negligible against the data term otherwise.
     const double lambda = 1e-9 * std::max(1e-300, AtA.trace());
