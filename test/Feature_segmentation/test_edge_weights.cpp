@@ -11,6 +11,11 @@
 #include "test_meshes.h"
 
 #include <string>
+#include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 namespace FS = CGAL::Feature_segmentation;
 
@@ -167,6 +172,32 @@ BOOST_AUTO_TEST_CASE(fandisk_sign_pattern)
   BOOST_TEST(salient > 500u);
   BOOST_TEST(fraction > 0.9); // measured 0.915
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// With concurrency_tag Parallel_tag, the curvatures, the per-face metrics and the per-edge
+// terms are computed by TBB's threads; every face and edge is its own, so the weights at
+// 1, 2 and 8 threads are exactly the sequential ones.
+BOOST_AUTO_TEST_CASE(parallel_weights_equal_the_sequential_ones_at_any_thread_count)
+{
+  SM m;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m));
+  auto weights = [&](auto tag) {
+    auto w = m.add_property_map<SM::Edge_index, double>("e:w").first;
+    FS::compute_edge_weights(m, w, FS::parameters::alpha(0.6).concurrency_tag(tag));
+    std::vector<double> out;
+    for(SM::Edge_index e : m.edges()) out.push_back(w[e]);
+    m.remove_property_map(w);
+    return out;
+  };
+  const std::vector<double> sequential = weights(CGAL::Sequential_tag());
+  BOOST_TEST(sequential.size() == m.number_of_edges());
+  for(std::size_t threads : {1u, 2u, 8u})
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    BOOST_TEST((weights(CGAL::Parallel_tag()) == sequential), threads << " threads");
+  }
+}
+#endif
 
 BOOST_AUTO_TEST_CASE(rejects_bad_options)
 {

@@ -47,7 +47,8 @@ namespace Feature_segmentation {
 ///   (default 0.05), `principal_curvature_map` (else estimated with
 ///   `neighborhood_rings` and `neighborhood_radius`), `feature_lines` (a `Feature_lines<TriangleMesh>`) and/or
 ///   `edge_is_feature_map` (else crest lines are detected with the options of
-///   `detect_crest_lines()`)
+///   `detect_crest_lines()`), `concurrency_tag` (`CGAL::Parallel_tag`: the curvature
+///   fits and the terms of the faces and edges on TBB's threads, the same values)
 template <typename TriangleMesh, typename SimilarityMap, typename AwardMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void compute_similarity_and_award(const TriangleMesh& tm, SimilarityMap similarity, AwardMap award,

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Feature_segmentation {
@@ -72,6 +73,15 @@ constexpr double default_neighborhood_radius = 0.01;
 
 namespace internal {
 
+// True if the named parameters ask for CGAL::Parallel_tag (concurrency_tag).
+template <typename NamedParameters>
+constexpr bool parallel_requested()
+{
+  typedef typename std::decay<decltype(CGAL::parameters::choose_parameter<CGAL::Sequential_tag>(
+    CGAL::parameters::get_parameter(std::declval<const NamedParameters&>(), internal_np::concurrency_tag)))>::type Tag;
+  return std::is_convertible<Tag, CGAL::Parallel_tag>::value;
+}
+
 // The options of the curvature fit, checked.
 struct Curvature_settings
 {
@@ -109,9 +119,7 @@ void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, Verte
   const TriangleMesh& tm = idx.mesh();
   VPM vpm = internal::vertex_point_map(tm, np);
   const Curvature_settings settings = read_curvature_settings(np);
-  typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
-    get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
-  constexpr bool parallel = std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value;
+  constexpr bool parallel = parallel_requested<NamedParameters>();
 #ifndef CGAL_LINKED_WITH_TBB
   static_assert(!parallel, "concurrency_tag(CGAL::Parallel_tag()) needs TBB (CGAL_LINKED_WITH_TBB)");
 #endif

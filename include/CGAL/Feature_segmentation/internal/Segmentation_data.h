@@ -130,13 +130,14 @@ public:
   }
 
   // Similarity and Award; the vertex graph's topology.
-  void compute_terms(double gamma)
+  // `parallel`: the faces and edges are computed by TBB's threads (the same terms).
+  void compute_terms(double gamma, bool parallel = false)
   {
     // gamma (Eq. 5-6) multiplies a curvature, so it is given for curvatures measured on
     // the mesh scaled so that the largest side of its bounding box is 1, as the authors'
     // tool does before anything else: the result does not depend on the file's units.
     auto face_metrics = std::make_shared<std::vector<Triangle_metric> >();
-    Edge_weight_terms<TriangleMesh>::compute(idx, vin, points, gamma, largest_side, *face_metrics, features);
+    Edge_weight_terms<TriangleMesh>::compute(idx, vin, points, gamma, largest_side, *face_metrics, features, parallel);
     metrics = std::move(face_metrics);
     // the curvature tensors are in the metrics now: only the positions are kept
     std::vector<Vertex_tensor_input>().swap(vin);

@@ -10,6 +10,7 @@
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/compact_index.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -125,23 +126,27 @@ struct Edge_weight_terms
   // multiplied before gamma applies.
   static void compute(const Indexing& idx, const std::vector<Vertex_tensor_input>& vin,
                       const std::vector<Vec3>& points, double gamma,
-                      double curvature_scale, std::vector<Triangle_metric>& metrics, Feature_terms& f)
+                      double curvature_scale, std::vector<Triangle_metric>& metrics, Feature_terms& f,
+                      bool parallel = false)
   {
     const TriangleMesh& tm = idx.mesh();
     const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
     metrics.assign(nf, Triangle_metric());
     f.dual_vertices.assign(nf, Vec3::Zero());
-    for(std::size_t i = 0; i < nf; ++i)
-    {
-      auto h = halfedge(idx.face_at(i), tm);
-      metrics[i] = triangle_metric(vin[idx.id(source(h, tm))], vin[idx.id(target(h, tm))],
-                                   vin[idx.id(target(next(h, tm), tm))], gamma, curvature_scale);
-      f.dual_vertices[i] = dual_vertex(idx, points, f, i);
-    }
+    for_each_range(nf, parallel, 4096, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i)
+      {
+        auto h = halfedge(idx.face_at(i), tm);
+        metrics[i] = triangle_metric(vin[idx.id(source(h, tm))], vin[idx.id(target(h, tm))],
+                                     vin[idx.id(target(next(h, tm), tm))], gamma, curvature_scale);
+        f.dual_vertices[i] = dual_vertex(idx, points, f, i);
+      }
+    });
     f.similarity.assign(ne, 0.);
     f.award.assign(ne, 0.);
-    for(std::size_t e = 0; e < ne; ++e)
-      edge_terms(idx, points, metrics, f, e);
+    for_each_range(ne, parallel, 4096, [&](std::size_t first, std::size_t last) {
+      for(std::size_t e = first; e < last; ++e) edge_terms(idx, points, metrics, f, e);
+    });
   }
 
   // After the features of some edges changed (a sketch): the dual vertices of `faces`

@@ -62,10 +62,8 @@ public:
     if(opt.crease_angle < 180)
     {
       Stage_timer timer(&times.creases);
-      typedef typename std::decay<decltype(choose_parameter<CGAL::Sequential_tag>(
-        get_parameter(np, internal_np::concurrency_tag)))>::type Concurrency_tag;
       compute_crease_cut(*input_idx, vpm, opt.crease_angle, opt.crease_filter_iterations, opt.tangent_discontinuities,
-                         opt.gamma, cut, std::is_convertible<Concurrency_tag, CGAL::Parallel_tag>::value);
+                         opt.gamma, cut, parallel_requested<NamedParameters>());
     }
     data = std::make_unique<Segmentation_data<TriangleMesh> >(cut.is_cut() ? *cut.working_idx : *input_idx);
     prepare(tm, np, times);

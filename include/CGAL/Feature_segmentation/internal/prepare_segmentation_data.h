@@ -105,7 +105,7 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
     with_curvature(get_parameter(np, internal_np::principal_curvature_map));
 
   Stage_timer timer(times != nullptr ? &times->weight_terms : nullptr);
-  data.compute_terms(opt.gamma);
+  data.compute_terms(opt.gamma, parallel_requested<NamedParameters>());
 }
 
 // alpha_e of every edge: from `edge_alpha_map` if given, else alpha on feature edges
