@@ -14,6 +14,12 @@
 //               "vertices", "triangles", "feature_edges", "crease_edges"}
 //   mesh       {"vertices": [x y z ...], "triangles": [i j k ...], "diagonal"}
 //   labels     {"patches", "face_patches": [...], "vertex_patches": [...]}
+//   mesh and labels with ?format=binary (what the page loads: a million faces in a few
+//   megabytes, read as typed arrays without parsing), little-endian:
+//     mesh     uint32 vertices V, uint32 triangles T, float64 diagonal, float32 x y z per
+//              vertex, uint32 i j k per triangle (16 + 12 V + 12 T bytes)
+//     labels   uint32 patches, uint32 T, uint32 V, uint32 0, uint32 patch per triangle,
+//              uint32 patch per vertex (16 + 4 T + 4 V bytes)
 //   history    ?from=K&count=N (N in 1 .. 1000): {"edit_count", "from", "edits": [lines]}
 //   features   {"ridges", "valleys", "user": [[x y z ...] per line], "creases": [x y z x y z
 //               per crease edge ...]}
@@ -43,6 +49,8 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 #include <cmath>
 #include <filesystem>
@@ -132,6 +140,40 @@ inline void json_keys(const nlohmann::json& j, const std::string& op, std::set<s
     if(!allowed.count(item.key()))
       throw Request_error(op + ": unknown key '" + item.key() + "'");
 }
+
+// Bytes of numbers in little-endian order, whatever the machine's, for the binary answers.
+class Little_endian_bytes
+{
+public:
+  explicit Little_endian_bytes(std::size_t size) { m_bytes.reserve(size); }
+  void u32(std::size_t x)
+  {
+    if(x > 0xffffffffu) throw std::length_error("a count or index beyond 32 bits");
+    put(std::uint32_t(x));
+  }
+  void f32(float x)
+  {
+    std::uint32_t bits;
+    std::memcpy(&bits, &x, 4);
+    put(bits);
+  }
+  void f64(double x)
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, 8);
+    put(std::uint32_t(bits & 0xffffffffu));
+    put(std::uint32_t(bits >> 32));
+  }
+  std::string take() { return std::move(m_bytes); }
+
+private:
+  void put(std::uint32_t x)
+  {
+    const char b[4] = { char(x & 0xff), char((x >> 8) & 0xff), char((x >> 16) & 0xff), char(x >> 24) };
+    m_bytes.append(b, 4);
+  }
+  std::string m_bytes;
+};
 
 } // namespace internal
 
@@ -269,9 +311,56 @@ public:
 
   std::string mesh() const
   {
+    std::vector<double> xyz;
+    std::vector<std::size_t> tri;
+    const double diagonal = mesh_arrays(xyz, tri);
+    return nlohmann::json{{"vertices", xyz}, {"triangles", tri}, {"diagonal", diagonal}}.dump();
+  }
+
+  /// GET /api/mesh?format=binary (the layout is at the top of this file).
+  std::string mesh_binary() const
+  {
+    std::vector<double> xyz;
+    std::vector<std::size_t> tri;
+    const double diagonal = mesh_arrays(xyz, tri);
+    internal::Little_endian_bytes out(16 + 4 * (xyz.size() + tri.size()));
+    out.u32(xyz.size() / 3);
+    out.u32(tri.size() / 3);
+    out.f64(diagonal);
+    for(double x : xyz) out.f32(float(x));
+    for(std::size_t i : tri) out.u32(i);
+    return out.take();
+  }
+
+  std::string labels() const
+  {
+    std::vector<std::size_t> faces, vertices;
+    const std::size_t patches = label_arrays(faces, vertices);
+    return nlohmann::json{{"patches", patches}, {"face_patches", faces}, {"vertex_patches", vertices}}.dump();
+  }
+
+  /// GET /api/labels?format=binary (the layout is at the top of this file).
+  std::string labels_binary() const
+  {
+    std::vector<std::size_t> faces, vertices;
+    const std::size_t patches = label_arrays(faces, vertices);
+    internal::Little_endian_bytes out(16 + 4 * (faces.size() + vertices.size()));
+    out.u32(patches);
+    out.u32(faces.size());
+    out.u32(vertices.size());
+    out.u32(0);
+    for(std::size_t p : faces) out.u32(p);
+    for(std::size_t p : vertices) out.u32(p);
+    return out.take();
+  }
+
+private:
+  // The vertices' coordinates and the triangles' corners as the page draws them; returns
+  // the bounding box's diagonal.
+  double mesh_arrays(std::vector<double>& xyz, std::vector<std::size_t>& tri) const
+  {
     std::lock_guard<std::mutex> lock(m_mutex);
     const Mesh& m = m_run->pipeline.mesh;
-    std::vector<double> xyz;
     xyz.reserve(3 * num_vertices(m));
     std::vector<std::size_t> index(m.number_of_vertices() + m.number_of_removed_vertices(), 0);
     std::size_t n = 0;
@@ -281,7 +370,6 @@ public:
       const K::Point_3& p = m.point(v);
       xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
     }
-    std::vector<std::size_t> tri;
     tri.reserve(3 * m_triangles.size());
     for(Mesh::Face_index f : m_triangles)
       for(Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m))
@@ -289,21 +377,23 @@ public:
     const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(m);
     const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                       CGAL::square(box.zmax() - box.zmin()));
-    return nlohmann::json{{"vertices", xyz}, {"triangles", tri}, {"diagonal", diagonal}}.dump();
+    return diagonal;
   }
 
-  std::string labels() const
+  // The patch of every triangle and vertex; returns the number of patches.
+  std::size_t label_arrays(std::vector<std::size_t>& faces, std::vector<std::size_t>& vertices) const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
     const Mesh& m = m_run->pipeline.mesh;
     const auto& seg = *m_run->pipeline.segmentation;
-    std::vector<std::size_t> faces, vertices;
     faces.reserve(m_triangles.size());
     for(Mesh::Face_index f : m_triangles) faces.push_back(seg.patch(f));
+    vertices.reserve(m.number_of_vertices());
     for(Mesh::Vertex_index v : m.vertices()) vertices.push_back(seg.patch(v));
-    return nlohmann::json{{"patches", seg.number_of_patches()}, {"face_patches", faces}, {"vertex_patches", vertices}}
-      .dump();
+    return seg.number_of_patches();
   }
+
+public:
 
   std::string features() const
   {

@@ -4,7 +4,8 @@
 // edits on two worker threads) bound to 127.0.0.1 by default serves the page (editor/ in
 // the build: HTML, JavaScript and three.js, read into memory at start, nothing fetched at
 // run time) and the JSON interface of editor_api.h:
-//   GET  /api/state, /api/mesh, /api/labels, /api/features, /api/boundaries?smooth=0|1,
+//   GET  /api/state, /api/mesh?format=json|binary, /api/labels?format=json|binary,
+//        /api/features, /api/boundaries?smooth=0|1,
 //        /api/history?from=K&count=N
 //   POST /api/edit   one edit (body: JSON), answered with the new state
 //   POST /api/restart  another crest-line scale: {"radius": X, "strength_threshold": T}
@@ -343,8 +344,17 @@ inline Http_answer answer_request(const http::request<http::string_body>& req, E
     {
       if(!get) return wrong_method("GET");
       if(path == "/api/state") return json_answer(session.state().dump());
-      if(path == "/api/mesh") return json_answer(session.mesh());
-      if(path == "/api/labels") return json_answer(session.labels());
+      if(path == "/api/mesh" || path == "/api/labels")
+      {
+        const auto format = query->find("format");
+        const std::string value = format == query->end() ? "json" : format->second;
+        if(value != "json" && value != "binary")
+          return error_answer(http::status::bad_request, path.substr(5) + ": 'format' must be json or binary");
+        const bool mesh = path == "/api/mesh";
+        if(value == "json") return json_answer(mesh ? session.mesh() : session.labels());
+        return Http_answer{http::status::ok, mesh ? session.mesh_binary() : session.labels_binary(),
+                           "application/octet-stream", false};
+      }
       if(path == "/api/features") return json_answer(session.features());
       if(path == "/api/boundaries")
       {

@@ -199,6 +199,20 @@ def perf_editor_session():
     return markdown(["mesh", "faces"] + ops + ["labels"], body, ["---"] + ["---:"] * 9) + "\n\n" + source_line(name)
 
 
+def perf_editor_page():
+    name = "editor_page.csv"
+    rows = read_csv(name)
+    body = [[r["mesh"], count(r["faces"]), f"{float(r['server_ready_s']):.1f}", r["patches"],
+             f"{float(r['load_ms']) / 1000:.1f}",
+             f"{float(r['alpha_round_trip_ms_median']):.0f} ({float(r['alpha_round_trip_ms_max']):.0f})",
+             f"{float(r['alpha_edit_request_ms_median']):.0f} ({float(r['alpha_server_ms_median']):.0f})",
+             f"{float(r['alpha_labels_fetch_ms_median']):.0f}", f"{float(r['alpha_draw_ms_median']):.0f}"]
+            for r in rows]
+    return markdown(["mesh", "faces", "server ready (s)", "patches", "page shown (s)",
+                     "alpha round trip, ms", "edit request (server), ms", "labels, ms", "colours and redraw, ms"],
+                    body, ["---"] + ["---:"] * 8) + "\n\n" + source_line(name)
+
+
 def perf_scaling():
     name = "scaling.csv"
     rows = read_csv(name)
@@ -403,6 +417,7 @@ TABLES = {
     "perf_fig8": perf_fig8,
     "perf_editing_class": perf_editing_class,
     "perf_editor_session": perf_editor_session,
+    "perf_editor_page": perf_editor_page,
     "perf_scaling": perf_scaling,
     "perf_mesh_input": perf_mesh_input,
     "perf_batch": perf_batch,

@@ -167,6 +167,30 @@ try {
   check(`labels: one patch per triangle and vertex, numbered 0 .. ${ref.patches - 1}`,
         l0.face_patches.length === ref.faces && l0.vertex_patches.length === ref.vertices &&
         Math.max(...l0.face_patches) === ref.patches - 1 && Math.max(...l0.vertex_patches) === ref.patches - 1);
+  // the binary forms the page loads: the same numbers (coordinates as float32)
+  const bytes = async (path) => {
+    const r = await fetch(url + path, { headers: auth });
+    return { status: r.status, type: r.headers.get('content-type'), buffer: await r.arrayBuffer() };
+  };
+  const bm = await bytes('api/mesh?format=binary');
+  const bmHeader = new DataView(bm.buffer);
+  const bmVertices = bmHeader.getUint32(0, true), bmTriangles = bmHeader.getUint32(4, true);
+  check('binary mesh: application/octet-stream, 16 + 12 V + 12 T bytes for 6475 vertices and 12946 triangles',
+        bm.status === 200 && bm.type === 'application/octet-stream' && bmVertices === 6475 && bmTriangles === 12946 &&
+        bm.buffer.byteLength === 16 + 12 * 6475 + 12 * 12946, `${bm.buffer.byteLength} bytes`);
+  const bmXyz = new Float32Array(bm.buffer, 16, 3 * bmVertices);
+  const bmTri = new Uint32Array(bm.buffer, 16 + 12 * bmVertices, 3 * bmTriangles);
+  check('binary mesh: the diagonal, the coordinates (as float32) and the triangles of the JSON mesh',
+        bmHeader.getFloat64(8, true) === mesh.diagonal && mesh.vertices.every((x, i) => bmXyz[i] === Math.fround(x)) &&
+        mesh.triangles.every((t, i) => bmTri[i] === t));
+  const bl = await bytes('api/labels?format=binary');
+  const blHeader = new DataView(bl.buffer);
+  const blFaces = new Uint32Array(bl.buffer, 16, ref.faces), blVertices = new Uint32Array(bl.buffer, 16 + 4 * ref.faces, ref.vertices);
+  check('binary labels: patches, counts and every patch id of the JSON labels',
+        bl.buffer.byteLength === 16 + 4 * (ref.faces + ref.vertices) && blHeader.getUint32(0, true) === ref.patches &&
+        blHeader.getUint32(4, true) === ref.faces && blHeader.getUint32(8, true) === ref.vertices &&
+        l0.face_patches.every((p, i) => blFaces[i] === p) && l0.vertex_patches.every((p, i) => blVertices[i] === p));
+  check('mesh: format=xml is refused', (await get('api/mesh?format=xml')).status === 400);
   const features = (await get('api/features')).body;
   check(`features: crease segments (6 numbers each) for the ${ref.crease_edges} crease edges`,
         features.creases.length === 6 * s0.crease_edges && s0.crease_edges === ref.crease_edges, s0.crease_edges);

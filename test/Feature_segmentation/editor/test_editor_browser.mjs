@@ -144,6 +144,8 @@ try {
                                       { headers: { 'X-Editor-Token': editor.token } })).json()).edits[0];
   check('Refine sends the painted faces as a local refinement', refined.startsWith('refine triangles ') &&
         refined.split(' ').length === painted + 3, refined.slice(0, 40) + '...');
+  // the feature lines and boundaries are drawn after the colours: wait for them
+  await page.waitForFunction(() => window.editor.overlaysPending === 0, null, { timeout: 30000 });
   check('no script error on the page', errors.length === 0, errors.join('; '));
   await page.screenshot({ path: screenshot });
   console.log(`screenshot: ${screenshot}`);
