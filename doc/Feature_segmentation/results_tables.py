@@ -237,7 +237,40 @@ def perf_scaling():
             parts.append(f"{threads} thread{'s' if threads > 1 else ''}: whole run {e:.2f}, segmentation {s:.2f}")
     exponents = ("Growth exponents over the fandisk series (the slope of log seconds against log faces; "
                  "1 is linear): " + "; ".join(parts) + ".") if parts else ""
-    return table + "\n\n" + exponents + "\n\n" + source_line(name)
+    return table + "\n\n" + exponents + "\n\n" + scaling_parts(series, most) + "\n\n" + source_line(name)
+
+
+def scaling_parts(series, most):
+    """The parts of the segmentation over the fandisk series: seconds at one thread and at
+    every core, and the cost of each step (4 times the faces) at one thread."""
+    parts = ["creases", "curvature", "feature_lines", "weight_terms", "oversegmentation"]
+    if not series or any(p + "_s" not in series[0] for p in parts):
+        return ""
+    one = {int(r["faces"]): r for r in series if int(r["threads"]) == 1}
+    many = {int(r["faces"]): r for r in series if int(r["threads"]) == most}
+    body = []
+    previous = None
+    for faces in sorted(one):
+        r, m = one[faces], many.get(faces)
+        cells = [r["mesh"], count(faces)]
+        for p in parts:
+            cells.append(seconds(r[p + "_s"]) + (" / " + seconds(m[p + "_s"]) if m and most > 1 else ""))
+        if previous is not None:
+            cells += [f"{float(r['wall_s']) / float(previous['wall_s']):.2f}",
+                      f"{float(r['curvature_s']) / float(previous['curvature_s']):.2f}"]
+        else:
+            cells += ["", ""]
+        if m and most > 1:
+            cells.append(f"{float(m['wall_s']) / float(r['wall_s']):.2f}")
+        body.append(cells)
+        previous = r
+    threads = f" / {most} threads" if most > 1 else ""
+    header = ["mesh", "faces"] + [p.replace("_", " ") + ", s (1 thread" + threads + ")" for p in parts] + \
+             ["wall, x of the mesh 4 times smaller", "curvature, x of the mesh 4 times smaller"]
+    if most > 1:
+        header.append(f"wall, {most} threads / 1")
+    return ("The parts of the stage segmentation, and the cost of 4 times the faces (one thread; linear: "
+            "4.0):\n\n" + markdown(header, body, ["---"] + ["---:"] * (len(header) - 1)))
 
 
 def perf_mesh_input():
