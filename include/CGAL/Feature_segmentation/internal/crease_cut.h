@@ -17,6 +17,7 @@
 #include <CGAL/Feature_segmentation/internal/compact_index.h>
 #include <CGAL/Feature_segmentation/internal/reserve_mesh.h>
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
+#include <CGAL/Feature_segmentation/internal/union_find.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -30,7 +31,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <vector>
 
@@ -86,92 +86,85 @@ struct Crease_cut
   bool is_cut() const { return mesh != nullptr; }
 };
 
-// Marks the creases of the mesh of `idx` (detect_creases; none if crease_angle >= 180)
-// and, if there are any, builds the cut copy, its maps and the ties. Working-mesh
-// indices are those of a Mesh_indexing of the copy (any indexing of it numbers its
-// elements in the same iteration order).
-template <typename TriangleMesh, typename VPM>
-void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, int filter_iterations,
-                        bool tangent, double gamma, Crease_cut<TriangleMesh>& cut, bool parallel = false)
+// The corners of the input's faces (face f, k-th halfedge of the face, at its target:
+// corner 3 f + k) and the vertex copy each belongs to. Corners joined across every
+// non-crease interior edge form the sectors, the vertices of the cut copy.
+struct Crease_sectors
 {
-  typedef boost::graph_traits<TriangleMesh> GTr;
-  typedef typename GTr::vertex_descriptor vertex_descriptor;
-  typedef typename GTr::halfedge_descriptor halfedge_descriptor;
-  typedef typename GTr::face_descriptor face_descriptor;
+  std::vector<std::size_t> corner_of_halfedge; // per input halfedge of a face: its corner
+  std::vector<std::size_t> corner_working;     // per corner: its working vertex
+};
+
+// The sectors of `cut.is_crease` and the working vertices in the order of the corners'
+// sectors (deterministic), then a copy of each isolated input vertex (documented: a
+// patch of its own); fills cut.input_vertex and cut.working_vertex.
+template <typename TriangleMesh>
+Crease_sectors crease_sectors(const Mesh_indexing<TriangleMesh>& idx, Crease_cut<TriangleMesh>& cut)
+{
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces(), ne = idx.number_of_edges();
-  // the working mesh has at most 3 nf + nv vertices (a copy per corner, and the
-  // isolated vertices) and 2 ne edges (4 ne halfedges)
-  check_compact_index_range(std::max(3 * nf + nv, 4 * ne));
-
-  cut = Crease_cut<TriangleMesh>();
-  cut.is_crease.assign(ne, 0);
-  if(crease_angle >= 180) return;
-  std::vector<double> angle;
-  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, tangent, angle, cut.clean, cut.cad,
-                                 parallel);
-  cut.number_of_creases = ne - std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 0));
-  if(cut.number_of_creases == 0) return;
-
-  // Corners (face, k-th halfedge of the face, at its target) joined across every
-  // non-crease interior edge: the classes are the sectors, the vertices of the cut copy.
-  std::vector<std::size_t> corner_vertex(3 * nf), parent(3 * nf);
-  std::vector<std::size_t> corner_of_halfedge(2 * ne, std::size_t(-1));
+  Crease_sectors sectors;
+  std::vector<std::size_t> corner_vertex(3 * nf);
+  sectors.corner_of_halfedge.assign(2 * ne, std::size_t(-1));
   for(std::size_t f = 0; f < nf; ++f)
   {
     int k = 0;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
     {
       corner_vertex[3 * f + k] = idx.id(target(h, tm));
-      corner_of_halfedge[idx.halfedge_id(h)] = 3 * f + k;
+      sectors.corner_of_halfedge[idx.halfedge_id(h)] = 3 * f + k;
       ++k;
     }
   }
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&parent](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
-  auto unite = [&](std::size_t a, std::size_t b) {
-    a = find(a); b = find(b);
-    if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
-  };
+  const auto corner = [&](auto h) { return sectors.corner_of_halfedge[idx.halfedge_id(h)]; };
+  Smallest_root_union_find sets(3 * nf);
   for(std::size_t e = 0; e < ne; ++e)
   {
     if(cut.is_crease[e]) continue;
-    const halfedge_descriptor h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
+    const auto h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
     if(is_border(h, tm) || is_border(o, tm)) continue;
     // h's corner is at target(h); the corner of o's face at target(h) is at
     // target(prev(o)) = source(o) = target(h)
-    unite(corner_of_halfedge[idx.halfedge_id(h)], corner_of_halfedge[idx.halfedge_id(prev(o, tm))]);
-    unite(corner_of_halfedge[idx.halfedge_id(o)], corner_of_halfedge[idx.halfedge_id(prev(h, tm))]);
+    sets.unite(corner(h), corner(prev(o, tm)));
+    sets.unite(corner(o), corner(prev(h, tm)));
   }
-
-  // Working vertices in the order of the corners' classes (deterministic).
-  std::vector<std::size_t> class_vertex(3 * nf, std::size_t(-1));
-  std::vector<std::size_t> corner_working(3 * nf);
+  std::vector<std::size_t> sector_vertex(3 * nf, std::size_t(-1));
+  sectors.corner_working.resize(3 * nf);
   cut.working_vertex.assign(nv, std::size_t(-1));
   for(std::size_t c = 0; c < 3 * nf; ++c)
   {
-    const std::size_t r = find(c);
-    if(class_vertex[r] == std::size_t(-1))
+    const std::size_t r = sets.find(c);
+    if(sector_vertex[r] == std::size_t(-1))
     {
-      class_vertex[r] = cut.input_vertex.size();
+      sector_vertex[r] = cut.input_vertex.size();
       cut.input_vertex.push_back(corner_vertex[c]);
     }
-    corner_working[c] = class_vertex[r];
+    sectors.corner_working[c] = sector_vertex[r];
     if(cut.working_vertex[corner_vertex[c]] == std::size_t(-1))
-      cut.working_vertex[corner_vertex[c]] = corner_working[c];
+      cut.working_vertex[corner_vertex[c]] = sectors.corner_working[c];
   }
-  // an isolated input vertex (documented: a patch of its own) keeps a copy
   for(std::size_t v = 0; v < nv; ++v)
     if(cut.working_vertex[v] == std::size_t(-1))
     {
       cut.working_vertex[v] = cut.input_vertex.size();
       cut.input_vertex.push_back(v);
     }
+  return sectors;
+}
 
-  // The cut copy, built face by face in the input's face order.
+// The cut copy, built face by face in the input's face order, and its indexing; then the
+// maps of halfedges and edges through that indexing (every working edge has a face,
+// hence an input halfedge mapped to it).
+template <typename TriangleMesh, typename VPM>
+void build_cut_mesh(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const Crease_sectors& sectors,
+                    Crease_cut<TriangleMesh>& cut)
+{
+  typedef boost::graph_traits<TriangleMesh> GTr;
+  typedef typename GTr::vertex_descriptor vertex_descriptor;
+  typedef typename GTr::halfedge_descriptor halfedge_descriptor;
+  typedef typename GTr::face_descriptor face_descriptor;
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
   cut.mesh = std::make_unique<TriangleMesh>();
   TriangleMesh& wm = *cut.mesh;
   // exactly what the copy holds (no doubling of its arrays): a crease becomes two edges
@@ -185,6 +178,7 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
     wv[i] = add_vertex(wm);
     put(wvpm, wv[i], WPoint(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
   }
+  const std::vector<std::size_t>& corner_working = sectors.corner_working;
   std::vector<face_descriptor> wf(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
@@ -196,8 +190,6 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   }
   CGAL_postcondition(CGAL::is_valid_polygon_mesh(wm));
 
-  // Halfedge and edge maps, through the indexing of the working mesh (kept for the
-  // stages). Every working edge has a face, hence an input halfedge mapped to it.
   cut.working_idx = std::make_unique<const Mesh_indexing<TriangleMesh> >(wm);
   const Mesh_indexing<TriangleMesh>& widx = *cut.working_idx;
   CGAL_postcondition(widx.number_of_faces() == nf);
@@ -208,7 +200,7 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
     CGAL_postcondition(widx.id(wf[f]) == f);
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
     {
-      const std::size_t target_copy = corner_working[corner_of_halfedge[idx.halfedge_id(h)]];
+      const std::size_t target_copy = corner_working[sectors.corner_of_halfedge[idx.halfedge_id(h)]];
       for(halfedge_descriptor w : CGAL::halfedges_around_face(halfedge(wf[f], wm), wm))
         if(widx.id(target(w, wm)) == target_copy)
         {
@@ -229,17 +221,26 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
       }
   }
   CGAL_postcondition(std::find(cut.input_edge.begin(), cut.input_edge.end(), std::size_t(-1)) == cut.input_edge.end());
+}
 
-  // Ties, two per crease edge (one per end), with their terms. The curvature s is on the
-  // mesh scaled to a largest side of 1, where the bend spreads over crease_bend_width.
-  auto point = [&](vertex_descriptor v) {
+// Ties, two per crease edge (one per end), with their terms. The curvature s is on the
+// mesh scaled to a largest side of 1, where the bend spreads over crease_bend_width. A
+// lone crease edge, both ends inside a sector, separates nothing: it is no crease (the
+// working mesh keeps it as an ordinary edge).
+template <typename TriangleMesh, typename VPM>
+void add_crease_ties(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
+                     double crease_angle, double gamma, const Crease_sectors& sectors, Crease_cut<TriangleMesh>& cut)
+{
+  const TriangleMesh& tm = idx.mesh();
+  auto point = [&](auto v) {
     const auto& q = get(vpm, v);
     return Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
   };
-  for(std::size_t e = 0; e < ne; ++e)
+  const auto copy = [&](auto h) { return sectors.corner_working[sectors.corner_of_halfedge[idx.halfedge_id(h)]]; };
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
   {
     if(!cut.is_crease[e]) continue;
-    const halfedge_descriptor h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
+    const auto h = halfedge(idx.edge_at(e), tm), o = opposite(h, tm);
     const double half = 0.5 * (point(source(h, tm)) - point(target(h, tm))).norm();
     // a curvature discontinuity (a jump of curvature, which no dihedral angle measures)
     // counts as a crease of tangent_crease_equivalent times the threshold angle
@@ -247,9 +248,7 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
     const double s = (bend * 3.14159265358979323846 / 180.) / crease_bend_width;
     // the copies of target(h) on h's side and on o's side (the corner of o's face at
     // target(h) is that of prev(o)); likewise for source(h)
-    const std::size_t ends[2][2] = {
-      { corner_working[corner_of_halfedge[idx.halfedge_id(h)]], corner_working[corner_of_halfedge[idx.halfedge_id(prev(o, tm))]] },
-      { corner_working[corner_of_halfedge[idx.halfedge_id(o)]], corner_working[corner_of_halfedge[idx.halfedge_id(prev(h, tm))]] } };
+    const std::size_t ends[2][2] = { { copy(h), copy(prev(o, tm)) }, { copy(o), copy(prev(h, tm)) } };
     bool tied = false;
     for(const auto& end : ends)
     {
@@ -263,11 +262,38 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
       t.similarity = half / (1. + gamma * s);
       cut.ties.push_back(t);
     }
-    // a lone crease edge, both ends inside a sector, separates nothing: it is no crease
-    // (the working mesh keeps it as an ordinary edge)
     if(!tied) cut.is_crease[e] = 0;
   }
-  cut.number_of_creases = ne - std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 0));
+}
+
+// Marks the creases of the mesh of `idx` (detect_creases; none if crease_angle >= 180)
+// and, if there are any, builds the cut copy, its maps and the ties. Working-mesh
+// indices are those of a Mesh_indexing of the copy (any indexing of it numbers its
+// elements in the same iteration order).
+template <typename TriangleMesh, typename VPM>
+void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle, int filter_iterations,
+                        bool tangent, double gamma, Crease_cut<TriangleMesh>& cut, bool parallel = false)
+{
+  const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces(), ne = idx.number_of_edges();
+  // the working mesh has at most 3 nf + nv vertices (a copy per corner, and the
+  // isolated vertices) and 2 ne edges (4 ne halfedges)
+  check_compact_index_range(std::max(3 * nf + nv, 4 * ne));
+  const auto count_creases = [&cut, ne] {
+    cut.number_of_creases = ne - std::size_t(std::count(cut.is_crease.begin(), cut.is_crease.end(), 0));
+  };
+
+  cut = Crease_cut<TriangleMesh>();
+  cut.is_crease.assign(ne, 0);
+  if(crease_angle >= 180) return;
+  std::vector<double> angle;
+  cut.is_crease = detect_creases(idx, vpm, crease_angle, filter_iterations, tangent, angle, cut.clean, cut.cad,
+                                 parallel);
+  count_creases();
+  if(cut.number_of_creases == 0) return;
+  const Crease_sectors sectors = crease_sectors(idx, cut);
+  build_cut_mesh(idx, vpm, sectors, cut);
+  add_crease_ties(idx, vpm, angle, crease_angle, gamma, sectors, cut);
+  count_creases();
 }
 
 } // namespace internal

@@ -7,9 +7,9 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_FACE_COMPONENTS_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/union_find.h>
 
 #include <cstddef>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -22,23 +22,15 @@ template <typename TriangleMesh, typename Join>
 std::vector<std::size_t> face_components(const Mesh_indexing<TriangleMesh>& idx, Join join)
 {
   const TriangleMesh& tm = idx.mesh();
-  const std::size_t nf = idx.number_of_faces();
-  std::vector<std::size_t> parent(nf);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
+  Smallest_root_union_find sets(idx.number_of_faces());
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
   {
     const auto h = halfedge(idx.edge_at(e), tm);
     const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
     if(f == idx.npos || g == idx.npos || !join(e)) continue;
-    const std::size_t a = find(f), b = find(g);
-    if(a < b) parent[b] = a; else if(b < a) parent[a] = b;
+    sets.unite(f, g);
   }
-  for(std::size_t f = 0; f < nf; ++f) parent[f] = find(f);
-  return parent;
+  return sets.roots();
 }
 
 } // namespace internal
