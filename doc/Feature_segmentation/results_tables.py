@@ -237,7 +237,24 @@ def perf_scaling():
             parts.append(f"{threads} thread{'s' if threads > 1 else ''}: whole run {e:.2f}, segmentation {s:.2f}")
     exponents = ("Growth exponents over the fandisk series (the slope of log seconds against log faces; "
                  "1 is linear): " + "; ".join(parts) + ".") if parts else ""
-    return table + "\n\n" + exponents + "\n\n" + scaling_parts(series, most) + "\n\n" + source_line(name)
+    return (table + "\n\n" + exponents + "\n\n" + scaling_parts(series, most) + against_cgal(series, most) + "\n\n" +
+            source_line(name))
+
+
+def against_cgal(series, most):
+    """The program against CGAL's read_polygon_mesh() and sharp_edges_segmentation() at 20
+    degrees on the same file (the column cgal_sharp_edges_s, filled on one mesh)."""
+    rows = [r for r in series if r.get("cgal_sharp_edges_s")]
+    if not rows:
+        return ""
+    cgal = float(rows[0]["cgal_sharp_edges_s"])
+    cells = []
+    for r in sorted(rows, key=lambda r: int(r["threads"])):
+        t = int(r["threads"])
+        cells.append(f"{seconds(r['wall_s'])} s at {t} thread{'s' if t > 1 else ''} ({float(r['wall_s']) / cgal:.2f} times)")
+    return (f"\n\nOn {rows[0]['mesh']} ({count(rows[0]['faces'])} faces), CGAL's `IO::read_polygon_mesh()` and "
+            f"`Polygon_mesh_processing::sharp_edges_segmentation()` at 20 degrees take {seconds(str(cgal))} s "
+            f"(in the benchmark's process); the program takes " + " and ".join(cells) + ".")
 
 
 def scaling_parts(series, most):
