@@ -12,6 +12,7 @@
 #include <CGAL/Feature_segmentation/internal/cad_tessellation.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -132,7 +133,6 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
                                                         int max_iterations, double sigma_r, double stop_roughness,
                                                         bool parallel = false)
 {
-  (void)parallel; // without TBB
   if(max_iterations <= 0 || initial_roughness <= stop_roughness) return normal;
   const std::size_t nf = normal.size();
   double sum = 0;
@@ -185,13 +185,7 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
   };
   for(int it = 0; it < max_iterations; ++it)
   {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(parallel)
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf, 1024),
-                        [&](const tbb::blocked_range<std::size_t>& b) { filter_range(b.begin(), b.end()); });
-    else
-#endif
-      filter_range(0, nf);
+    for_each_range(nf, parallel, 1024, filter_range);
     if(it > 0 && !least.empty())
     {
       // the roughness of n, the output of round it - 1 (round 0 reads the input, whose
