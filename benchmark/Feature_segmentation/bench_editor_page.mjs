@@ -11,8 +11,8 @@
 //     drawn when they arrive, after);
 //   - alpha round trip: an alpha edit from the slider to the new colours drawn (the
 //     page's `editor.lastRoundTripMs`: request, solve, binary labels, colours, redraw),
-//     alternately 1.0 and 0.6, --repeat times, each once the previous one's boundaries
-//     are drawn; median and maximum, and the server's own time of the edit.
+//     alternately 1.0 and 0.6, --repeat times, each once the boundaries before it are
+//     drawn; median and maximum, and the server's own time of the edit.
 // Prints a table and writes CSV and Markdown (--out, default editor_page.csv and .md).
 //
 // Usage: node bench_editor_page.mjs [--levels 3] [--repeat 9] [--work DIR] [--out FILE]
@@ -112,6 +112,8 @@ try {
   await page.waitForFunction(() => window.editor && window.editor.ready === true, null, { timeout: 300000 });
   const loadMs = await page.evaluate(() => window.editor.loadMs);
   const patchesAtStart = Number(await page.textContent('#patches'));
+  // the feature lines and boundaries the page fetches after showing the part
+  await page.waitForFunction(() => window.editor.overlaysPending === 0, null, { timeout: 300000 });
   const trips = [], server = [], splits = { edit: [], labels: [], draw: [] };
   for (let i = 0; i < repeat; ++i) {
     const value = i % 2 === 0 ? '1' : '0.6';
