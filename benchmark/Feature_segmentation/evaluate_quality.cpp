@@ -43,14 +43,16 @@
 // result; OUT/resolution.md and OUT/resolution.csv.
 //
 // Usage: evaluate_quality [--data DIR] [--out DIR] [--only NAME[,NAME...]] [--parts NAME[,NAME...]]
-//                         [--no-robustness]
+//                         [--no-robustness] [--methods NAME[,NAME...]]
 //                         [--noise X,Y,...] [--alpha A] [--strength-threshold S]
 //                         [--crease-filter N] [--no-tangent] [--crest-lines | --no-crest-lines]
 //   DIR (default $FEATURE_SEGMENTATION_DATA): holds paper-models/, abc/ (ground truth)
 //   and cad/; without it, fandisk alone is evaluated and the CAD table is skipped.
 //   --only names models of the quality table, "cad" (the CAD table) and "resolution"
 //   (the resolution series): `--only cad` is the CAD table alone. The options from
-//   --noise on set the CAD table and the resolution series. --help tells more.
+//   --noise on set the CAD table and the resolution series; --methods keeps some of the
+//   CAD table's columns (`--methods default` for a quick look at the package alone).
+//   --help tells more.
 
 #include "evaluation/abc_ground_truth.h"
 #include "evaluation/cad_parts.h"
@@ -348,7 +350,7 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
 {
   namespace po = boost::program_options;
   Cad_options& cad = opt.cad_options;
-  std::string only, noise, parts;
+  std::string only, noise, parts, methods;
   for(double sigma : cad.noise) noise += (noise.empty() ? "" : ",") + plain(sigma);
   bool no_robustness = false, no_tangent = false, crest_lines = false, no_crest_lines = false;
   po::options_description options("Usage: evaluate_quality [options]  (a negative number as --alpha=-0.5)\nOptions");
@@ -366,6 +368,8 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
     ("generated", po::value(&opt.generated)->value_name("DIR")->default_value(opt.generated),
      "CAD table: the folder of the generated parts (NAME.obj and NAME.labels, made by the target generated_parts)")
     ("no-robustness", po::bool_switch(&no_robustness), "quality table: without the noise columns")
+    ("methods", po::value(&methods)->value_name("NAME[,NAME...]"),
+     "CAD table: only these columns (default, paper, sharp20, sharp45, sharp60, ransac, vsa); default: all")
     ("noise", po::value(&noise)->value_name("X,Y,...")->default_value(noise),
      "CAD table: the noise levels, standard deviations as fractions of the diagonal")
     ("alpha", po::value(&cad.alpha)->value_name("A")->default_value(cad.alpha, plain(cad.alpha)),
@@ -415,6 +419,14 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
     if(crest_lines && no_crest_lines) throw po::error("--crest-lines and --no-crest-lines exclude each other");
     for(const std::string& name : split_commas(only)) opt.only.insert(name);
     for(const std::string& name : split_commas(parts)) opt.parts.insert(name);
+    for(const std::string& name : split_commas(methods))
+    {
+      const auto& known = cad_methods();
+      if(std::none_of(known.begin(), known.end(), [&](const auto& m) { return m.first == name; }))
+        throw po::error("--methods takes names among default, paper, sharp20, sharp45, sharp60, ransac, vsa (got '" +
+                        name + "')");
+      cad.methods.insert(name);
+    }
   }
   catch(const po::error& e)
   {

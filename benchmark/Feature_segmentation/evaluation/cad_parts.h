@@ -57,6 +57,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -77,6 +78,9 @@ struct Cad_options
   double strength_threshold = FS::default_strength_threshold;
   bool tangent = FS::default_tangent_discontinuities;
   bool crest_lines = FS::default_crest_lines_on_clean_tessellations;
+  std::set<std::string> methods; ///< the CSV names of cad_methods() to run; empty: all
+  /// Whether the method of cad_methods() at `k` runs.
+  bool runs(std::size_t k) const;
 };
 
 /// The settings of the first column, for the reports.
@@ -295,6 +299,7 @@ struct Cad_score
   std::size_t small_patches = 0; ///< patches under 0.1% of the area (small_patch_share)
   FS::Boundary_scores boundary;
   double seconds = 0;
+  bool ran = true; ///< false: the method was not selected (Cad_options::methods)
 };
 
 /// The area share under which a patch counts as small in the tables (confetti).
@@ -327,22 +332,31 @@ inline const std::vector<std::pair<std::string, std::string> >& cad_methods()
   return methods;
 }
 
-/// Runs the methods of cad_methods() on `mesh` (a part, maybe noisy) and scores them
-/// against `labels` at 1% of `mesh`'s diagonal.
+inline bool Cad_options::runs(std::size_t k) const { return methods.empty() || methods.count(cad_methods()[k].first) > 0; }
+
+/// Runs the methods of cad_methods() that `options` selects on `mesh` (a part, maybe
+/// noisy) and scores them against `labels` at 1% of `mesh`'s diagonal; the others get a
+/// score of zero (Cad_score::ran false).
 inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vector<int>& labels,
                                               std::size_t true_patches, const Cad_options& options)
 {
-  std::vector<Segmentation> runs;
-  runs.push_back(run_package(mesh, options, false));
-  runs.push_back(run_package(mesh, options, true));
-  for(double angle : {20., 45., 60.}) runs.push_back(run_sharp_edges(mesh, angle));
-  runs.push_back(run_efficient_ransac(mesh));
-  runs.push_back(run_vsa(mesh, true_patches));
+  const std::function<Segmentation()> method[] = {
+    [&] { return run_package(mesh, options, false); }, [&] { return run_package(mesh, options, true); },
+    [&] { return run_sharp_edges(mesh, 20.); },        [&] { return run_sharp_edges(mesh, 45.); },
+    [&] { return run_sharp_edges(mesh, 60.); },        [&] { return run_efficient_ransac(mesh); },
+    [&] { return run_vsa(mesh, true_patches); }};
   auto truth =
     boost::make_function_property_map<face_descriptor>([&labels](face_descriptor f) { return labels[f.idx()]; });
   std::vector<Cad_score> scores;
-  for(const Segmentation& s : runs)
+  for(std::size_t k = 0; k < cad_methods().size(); ++k)
   {
+    if(!options.runs(k))
+    {
+      scores.emplace_back();
+      scores.back().ran = false;
+      continue;
+    }
+    const Segmentation s = method[k]();
     auto patches = boost::make_function_property_map<face_descriptor>(
       [&s](face_descriptor f) { return s.face_patch[f.idx()]; });
     Cad_score r;
@@ -440,6 +454,7 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
     for(std::size_t l = 0; l < levels; ++l)
       for(std::size_t k = 0; k < methods.size(); ++k)
       {
+        if(!options.runs(k)) continue;
         const Cad_score& s = r.scores[l][k];
         csv.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches),
                             fmt(r.tangent_share, 6), plain(options.noise[l]), methods[k].first,
@@ -452,7 +467,8 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
       const auto m = mean_f(results, group.second, l);
       if(m.second == 0) continue;
       for(std::size_t k = 0; k < methods.size(); ++k)
-        csv.rows.push_back({"mean " + group.first, "", "", "", "", plain(options.noise[l]), methods[k].first, "", "",
+        if(options.runs(k))
+          csv.rows.push_back({"mean " + group.first, "", "", "", "", plain(options.noise[l]), methods[k].first, "", "",
                             "", "", fmt(m.first[k], 6), ""});
     }
   std::ofstream csv_file(std::filesystem::path(out) / "cad_parts.csv");
@@ -480,11 +496,14 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
        << " parts\n\n";
     Text_table means;
     means.header = {"noise (of the diagonal)"};
-    for(const auto& m : methods) means.header.push_back(m.second);
+    for(std::size_t k = 0; k < methods.size(); ++k)
+      if(options.runs(k)) means.header.push_back(methods[k].second);
     for(std::size_t l = 0; l < levels; ++l)
     {
       means.rows.push_back({plain(100 * options.noise[l]) + "%"});
-      for(double f : mean_f(results, group.second, l).first) means.rows.back().push_back(fmt(f));
+      const std::vector<double> f = mean_f(results, group.second, l).first;
+      for(std::size_t k = 0; k < methods.size(); ++k)
+        if(options.runs(k)) means.rows.back().push_back(fmt(f[k]));
     }
     means.write_markdown(md);
   }
@@ -493,20 +512,23 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
     md << "\n## Noise " << plain(100 * options.noise[l]) << "% of the diagonal\n\n";
     Text_table t;
     t.header = {"set", "part", "faces", "true patches", "tang."};
-    for(const auto& m : methods) t.header.push_back(m.second);
+    for(std::size_t k = 0; k < methods.size(); ++k)
+      if(options.runs(k)) t.header.push_back(methods[k].second);
     for(const Cad_result& r : results)
     {
       t.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share)});
       for(const Cad_score& s : r.scores[l])
-        t.rows.back().push_back(fmt(s.boundary.f_score) + " (" + std::to_string(s.patches) + "/" +
-                                std::to_string(s.small_patches) + ")");
+        if(s.ran)
+          t.rows.back().push_back(fmt(s.boundary.f_score) + " (" + std::to_string(s.patches) + "/" +
+                                  std::to_string(s.small_patches) + ")");
     }
     for(const auto& group : cad_groups())
     {
       const auto m = mean_f(results, group.second, l);
       if(m.second == 0) continue;
       t.rows.push_back({"", "mean " + group.first + " (" + std::to_string(m.second) + ")", "", "", ""});
-      for(double f : m.first) t.rows.back().push_back("**" + fmt(f) + "**");
+      for(std::size_t k = 0; k < methods.size(); ++k)
+        if(options.runs(k)) t.rows.back().push_back("**" + fmt(m.first[k]) + "**");
     }
     t.write_markdown(md);
   }
@@ -523,6 +545,7 @@ inline void write_worst_part_scenes(const std::string& out, const Cad_options& o
 {
   const auto clean = std::find(options.noise.begin(), options.noise.end(), 0.);
   if(clean == options.noise.end()) return; // no clean run to rank the parts by
+  if(!options.runs(0)) return;             // nor the package's scores
   const std::size_t l = std::size_t(clean - options.noise.begin());
   std::vector<const Cad_result*> parts;
   for(const Cad_result& r : results)
@@ -559,7 +582,8 @@ inline void write_worst_part_scenes(const std::string& out, const Cad_options& o
                                                          {2, run_sharp_edges(part.mesh, 20.)},
                                                          {5, run_efficient_ransac(part.mesh)}};
     for(const auto& run : runs)
-      scene.tile_with_patches(label(cad_methods()[run.first].second, run.second, &scores[run.first]),
+      scene.tile_with_patches(label(cad_methods()[run.first].second, run.second,
+                                    scores[run.first].ran ? &scores[run.first] : nullptr),
                               match_to_reference(run.second.face_patch, truth, area));
     if(!scene.good()) std::cerr << "evaluate_quality: cannot write the scene of " << part.name << std::endl;
   }
