@@ -562,6 +562,49 @@ BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_cad_part_only)
   BOOST_TEST(long_default.patches == long_full.patches);
 }
 
+// A noisy tessellation is not clean, and has no exactly planar region to tell a CAD part
+// by; its creases, found on the filtered normals, still cut it into its faces. A rod of
+// length 4 and radius 1 (48 facets round, 16 rings along), every vertex inside its side
+// moved radially by a seeded uniform amount of up to 3% of the radius (0.6% of the
+// diagonal; the end rings stay, so the ends keep their 90-degree creases): its creases
+// are the two end rings, which cut it into the side (80% of the area: 8 pi against pi
+// for each end) and the two ends, so it is a CAD part and its crest lines, which the
+// noise strews along the side, weigh 0.6 - 0.5 (0.6 with
+// crest_lines_on_clean_tessellations(true)). Either way the side is one patch.
+BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_noisy_cad_part)
+{
+  std::vector<int> side;
+  fs_test::Soup s = closed_rod([](double, double) { return 1.; }, 4., 48, 16, side);
+  unsigned long long state = 2024;
+  for(std::size_t v = 0; v + 2 < s.points.size(); ++v) // not the two centres of the ends
+  {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double u = double(state >> 11) / double(1ULL << 53); // [0, 1)
+    if(!(s.points[v][2] > 0. && s.points[v][2] < 4.)) continue;
+    const double f = 1. + 0.03 * (2 * u - 1);
+    s.points[v][0] *= f;
+    s.points[v][1] *= f;
+  }
+  const SM m = fs_test::to_mesh<SM>(s);
+  for(bool full_alpha : {false, true})
+  {
+    FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crest_lines_on_clean_tessellations(full_alpha));
+    BOOST_TEST(seg.number_of_crease_edges() == 96u);
+    double least = 1e300, most = -1e300;
+    for(auto e : edges(m))
+      if(seg.is_feature_edge(e) && !seg.is_crease_edge(e))
+      {
+        least = (std::min)(least, seg.alpha(e));
+        most = (std::max)(most, seg.alpha(e));
+      }
+    BOOST_TEST(least <= most); // it has crest lines
+    BOOST_TEST(least == (full_alpha ? 0.6 : 0.1), boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(most == (full_alpha ? 0.6 : 0.1), boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(seg.number_of_patches() == 3u);
+    BOOST_TEST(patches_are_sides(m, seg, side, 3));
+  }
+}
+
 // A face cut out alone by its three creases is no patch of its own: it joins the side it
 // bends least from (x=1, 35.3 degrees), and the part is the cube's six sides.
 BOOST_AUTO_TEST_CASE(a_face_isolated_by_creases_joins_its_flattest_neighbour)

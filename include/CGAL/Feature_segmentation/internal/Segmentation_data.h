@@ -46,9 +46,9 @@ struct Segmentation_options
   // on a clean tessellation, the curvature discontinuities (a fillet meeting a plane
   // without a crease) join the creases (see the manual, Creases)
   bool tangent_discontinuities = default_tangent_discontinuities;
-  // crest lines also on a clean tessellation cut open along creases, as the paper; by
-  // default its feature lines are its creases and curvature discontinuities, which bound
-  // its B-rep faces (crest lines cut curved faces apart: see the manual, CAD Parts)
+  // crest lines at the full alpha also on a CAD tessellation (clean, or cut into pieces
+  // by its creases), as the paper; by default its creases and curvature discontinuities
+  // bound its B-rep faces (crest lines cut curved faces apart: see the manual, CAD Parts)
   bool crest_lines_on_clean_tessellations = default_crest_lines_on_clean_tessellations;
   // set by the class, not by a parameter: whether prepare_segmentation_data detects
   // crest lines when no feature is given

@@ -75,7 +75,7 @@ struct Crease_cut
   std::vector<char> is_crease;                    // per input edge
   std::size_t number_of_creases = 0;
   bool clean = false;                             // a clean tessellation (normal roughness at most 0.01)
-  bool cad = false;                               // and one of a CAD part (is_cad_tessellation)
+  bool cad = false;                               // one of a CAD part (detect_creases)
   // ids in 32 bits (Compact_index)
   std::vector<Compact_index> input_vertex;        // per working vertex: the input vertex it copies
   std::vector<Compact_index> working_vertex;      // per input vertex: its copy in its first face's sector

@@ -233,7 +233,7 @@ constexpr int crease_smooth_filter_iterations = 10;
 // discontinuities (mark_tangent_discontinuities), marked 2; a face that these would
 // cut out alone keeps its flattest edge (join_isolated_crease_faces). `angle` receives
 // the filtered angles, `clean` whether the tessellation is clean, `cad` whether it is
-// a clean tessellation of a CAD part (is_cad_tessellation).
+// one of a CAD part (is_cad_tessellation if clean, else creases_cut_into_pieces).
 template <typename TriangleMesh, typename VPM>
 std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle,
                                  int filter_iterations, bool tangent, std::vector<double>& angle, bool& clean,
@@ -278,7 +278,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   }
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   join_isolated_crease_faces(idx, angle, is_crease);
-  cad = clean && is_cad_tessellation(idx, is_crease, normal, area, diagonal);
+  cad = clean ? is_cad_tessellation(idx, is_crease, normal, area, diagonal) : creases_cut_into_pieces(idx, is_crease, area);
   return is_crease;
 }
 

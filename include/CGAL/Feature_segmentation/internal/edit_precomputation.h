@@ -30,7 +30,7 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// On a clean CAD tessellation cut open along its creases (Crease_cut::cad), the crest
+// On a CAD tessellation cut open along its creases (Crease_cut::cad), the crest
 // lines' alpha_e is the global alpha minus this: at the default alpha they do not cut the
 // B-rep faces, as alpha grows they do, so that alpha stays the granularity control on
 // CAD parts.
@@ -159,11 +159,12 @@ private:
       return;
     }
     const TriangleMesh& wm = *cut.mesh;
-    // a clean tessellation cut open: its B-rep faces are bounded by the creases and the
-    // curvature discontinuities, and crest lines mostly cut its curved faces apart
-    // (crest_lines_on_clean_tessellations(false) leaves them out)
+    // a mesh cut open along its creases: on a CAD tessellation (Crease_cut::cad) the
+    // creases and the curvature discontinuities bound its B-rep faces, and crest lines
+    // mostly cut its curved faces apart (on a noisy one, along the rulings of its
+    // cylinders and round its tori)
     Segmentation_options o = opt;
-    // crest lines on a clean tessellation weigh less: alpha_e is alpha minus
+    // crest lines on a CAD tessellation weigh less: alpha_e is alpha minus
     // clean_crest_alpha_offset on their edges (crest_lines_on_clean_tessellations(true):
     // the full alpha, as the paper)
     const bool weak_crests = cut.cad && !opt.crest_lines_on_clean_tessellations &&
