@@ -14,7 +14,7 @@
 // Usage: bench_editor [--data DIR] [--repeat N] [--out FILE]
 #include "bench_common.h"
 
-#include "../../demo/Feature_segmentation/editor_api.h"
+#include "editor_api.h"
 
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -58,7 +58,7 @@ double median(std::vector<double> v)
 // Writes fandisk subdivided flat `levels` times as OFF.
 std::string subdivided_fandisk(int levels)
 {
-  CGAL::Surface_mesh<fs_demo::K::Point_3> m;
+  CGAL::Surface_mesh<fs_app::K::Point_3> m;
   std::string error;
   if(!fs_bench::read_mesh(std::string(FS_MESH_DIR) + "/fandisk.off", m, error))
     throw std::runtime_error("fandisk.off: " + error);
@@ -84,11 +84,11 @@ std::string subdivided_fandisk(int levels)
 
 void bench(const std::string& name, const std::string& path, int repeat, std::vector<Row>& rows)
 {
-  fs_demo::Options options;
+  fs_app::Options options;
   options.input = path;
   options.quiet = true;
   const auto start = std::chrono::steady_clock::now();
-  fs_demo::Editor_session session(options);
+  fs_app::Editor_session session(options);
   std::cerr << name << ": session ready in " << seconds_since(start) << " s" << std::endl;
   const std::size_t n = session.number_of_triangles();
   const nlohmann::json mesh = nlohmann::json::parse(session.mesh());
@@ -172,7 +172,7 @@ void bench(const std::string& name, const std::string& path, int repeat, std::ve
 // vertex_patches() after it, what a caller who asks for every vertex's patch pays.
 void bench_library(const std::string& name, const std::string& path, int repeat, std::vector<Row>& rows)
 {
-  typedef CGAL::Surface_mesh<fs_demo::K::Point_3> Mesh;
+  typedef CGAL::Surface_mesh<fs_app::K::Point_3> Mesh;
   Mesh m;
   std::string error;
   if(!fs_bench::read_mesh(path, m, error)) throw std::runtime_error(path + ": " + error);

@@ -1,4 +1,4 @@
-// Benchmark of the programs' mesh input (demo/Feature_segmentation/mesh_io): fandisk
+// Benchmark of the programs' mesh input (app/Feature_segmentation/mesh_io): fandisk
 // subdivided flat (each triangle into 4, same geometry) to 12,946 / 207,136 / 828,544
 // faces, written as text OFF, OBJ (`f a//n` faces), binary PLY and binary STL; for each
 // file the whole load of the program (parse, checks, repairs, mesh, the fastest of 3),
@@ -9,8 +9,8 @@
 // Usage: bench_mesh_input [--mesh FILE] [--levels 0,2,3] [--out FILE]
 #include "bench_common.h"
 
-#include "../../demo/Feature_segmentation/huge_pages.h"
-#include "../../demo/Feature_segmentation/read_input_mesh.h"
+#include "huge_pages.h"
+#include "read_input_mesh.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -98,7 +98,7 @@ std::size_t count_lines(const std::string& path)
 
 int main(int argc, char** argv)
 {
-  fs_demo::use_huge_page_heap(argc, argv);
+  fs_app::use_huge_page_heap(argc, argv);
   std::string mesh_file = std::string(FS_MESH_DIR) + "/fandisk.off", out_csv;
   std::vector<int> levels = {0, 2, 3};
   for(int i = 1; i < argc; ++i)
@@ -115,8 +115,8 @@ int main(int argc, char** argv)
     else { std::cerr << "usage: bench_mesh_input [--mesh FILE] [--levels 0,2,3] [--out FILE]\n"; return 2; }
   }
 
-  fs_demo::Mesh_soup soup;
-  fs_demo::read_mesh_soup(mesh_file, soup);
+  fs_app::Mesh_soup soup;
+  fs_app::read_mesh_soup(mesh_file, soup);
   std::vector<P> points = soup.points;
   std::vector<T> triangles;
   for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
@@ -144,8 +144,8 @@ int main(int argc, char** argv)
     {
       const std::string path = stem + "." + format;
       const double bytes = double(std::filesystem::file_size(path));
-      const double load = fs_bench::fastest(3, [&] { Mesh m; fs_demo::read_input_mesh(path, m); });
-      const double parse = fs_bench::fastest(3, [&] { fs_demo::Mesh_soup s; fs_demo::read_mesh_soup(path, s); });
+      const double load = fs_bench::fastest(3, [&] { Mesh m; fs_app::read_input_mesh(path, m); });
+      const double parse = fs_bench::fastest(3, [&] { fs_app::Mesh_soup s; fs_app::read_mesh_soup(path, s); });
       const double cgal = fs_bench::fastest(3, [&] {
         std::vector<K::Point_3> p; std::vector<std::vector<std::size_t> > f;
         CGAL::IO::read_polygon_soup(path, p, f);

@@ -58,7 +58,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// The largest request body the editor reads (a stroke over a million faces fits).
 constexpr std::size_t editor_max_body_bytes = 8u << 20;
@@ -650,6 +650,6 @@ inline int run_editor(const Options& options)
   return EXIT_SUCCESS;
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_SERVER_H

@@ -31,7 +31,7 @@
 
 namespace {
 
-using namespace fs_demo;
+using namespace fs_app;
 
 int run(const Options& options)
 {

@@ -8,7 +8,7 @@
 
 #include <ostream>
 
-namespace fs_demo {
+namespace fs_app {
 
 // The three forms of the command line, then a blank line.
 inline void print_usage_lines(std::ostream& os)
@@ -228,6 +228,6 @@ inline void print_usage(std::ostream& os)
      << "the sketch's points apart, as prepare_seconds).\n";
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_USAGE_H

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Python module `feature_segmentation` (its compiled part, `_core`): numpy arrays in,
-// numpy arrays out, over the same pipeline as the program (demo/Feature_segmentation/
-// pipeline.h): the same mesh repairs, the same options with the same checks, the same
+// numpy arrays out, over the same pipeline as the program (the application layer's
+// pipeline.h, app/Feature_segmentation/): the same mesh repairs, the same options with the same checks, the same
 // edits (the edit script's Edit_runner), the same outputs. The GIL is released while the
 // pipeline runs, so threads segment meshes at once. Bad input raises ValueError with the
 // library's message.
 
-#include "../../demo/Feature_segmentation/batch_command.h"
-#include "../../demo/Feature_segmentation/pipeline.h"
-#include "../../demo/Feature_segmentation/program_options.h"
+#include "batch_command.h"
+#include "pipeline.h"
+#include "program_options.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -23,7 +23,7 @@
 #include <vector>
 
 namespace py = pybind11;
-using namespace fs_demo;
+using namespace fs_app;
 
 namespace {
 

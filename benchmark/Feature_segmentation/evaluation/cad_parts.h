@@ -152,7 +152,7 @@ inline bool gunzip_file(const std::filesystem::path& gz, const std::filesystem::
 /// The file's labels, one per face of the file, put on the mesh faces the program's
 /// reader made of them (a duplicate face of the file keeps its first occurrence's face).
 inline bool read_labels_of_file_faces(const std::filesystem::path& path,
-                                      const fs_demo::Input_correspondence<Mesh>& correspondence,
+                                      const fs_app::Input_correspondence<Mesh>& correspondence,
                                       std::size_t number_of_faces, std::vector<int>& labels, std::string& error)
 {
   std::ifstream in(path);
@@ -212,11 +212,11 @@ inline bool read_cad_part(const std::filesystem::path& path, Part_format format,
     }
     stem.replace_extension();
     part.name = stem.filename().string();
-    fs_demo::Input_correspondence<Mesh> correspondence;
+    fs_app::Input_correspondence<Mesh> correspondence;
     bool ok = true;
     try
     {
-      const fs_demo::Read_report report = fs_demo::read_input_mesh(obj.string(), part.mesh, correspondence);
+      const fs_app::Read_report report = fs_app::read_input_mesh(obj.string(), part.mesh, correspondence);
       for(const std::string& notice : report.notices)
         std::cerr << "evaluate_quality: " << part.name << ": " << notice << std::endl;
     }

@@ -30,9 +30,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   CGAL::Feature_segmentation::Feature_lines<Mesh> lines;
   try
   {
-    fs_demo::read_user_feature_lines(in, "input.polylines.txt", cube, lines);
+    fs_app::read_user_feature_lines(in, "input.polylines.txt", cube, lines);
   }
-  catch(const fs_demo::Input_error&)
+  catch(const fs_app::Input_error&)
   {
   }
   return 0;

@@ -18,16 +18,16 @@ typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 int fs_fuzz_mesh_reader(const char* format, const std::uint8_t* data, std::size_t size)
 {
   const std::string name = std::string("input.") + format;
-  const fs_demo::internal::File_content content(reinterpret_cast<const char*>(data), size);
-  fs_demo::Mesh_soup soup;
+  const fs_app::internal::File_content content(reinterpret_cast<const char*>(data), size);
+  fs_app::Mesh_soup soup;
   Mesh mesh;
-  fs_demo::Input_correspondence<Mesh> correspondence;
+  fs_app::Input_correspondence<Mesh> correspondence;
   try
   {
-    fs_demo::read_mesh_soup(name, format, content, soup);
-    fs_demo::mesh_from_soup(name, soup, mesh, correspondence);
+    fs_app::read_mesh_soup(name, format, content, soup);
+    fs_app::mesh_from_soup(name, soup, mesh, correspondence);
   }
-  catch(const fs_demo::Input_error&)
+  catch(const fs_app::Input_error&)
   {
     return 0;
   }

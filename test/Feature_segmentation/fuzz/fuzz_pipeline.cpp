@@ -21,16 +21,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   if(size > 4096)
     return 0;
-  const fs_demo::internal::File_content content(reinterpret_cast<const char*>(data), size);
-  fs_demo::Mesh_soup soup;
+  const fs_app::internal::File_content content(reinterpret_cast<const char*>(data), size);
+  fs_app::Mesh_soup soup;
   Mesh mesh;
-  fs_demo::Input_correspondence<Mesh> correspondence;
+  fs_app::Input_correspondence<Mesh> correspondence;
   try
   {
-    fs_demo::read_mesh_soup("input.off", "off", content, soup);
-    fs_demo::mesh_from_soup("input.off", soup, mesh, correspondence);
+    fs_app::read_mesh_soup("input.off", "off", content, soup);
+    fs_app::mesh_from_soup("input.off", soup, mesh, correspondence);
   }
-  catch(const fs_demo::Input_error&)
+  catch(const fs_app::Input_error&)
   {
     return 0;
   }

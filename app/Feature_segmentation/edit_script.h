@@ -46,7 +46,7 @@
 #include <string>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// A mistake in an edit script (or a script that cannot be read); the message is
 /// "FILE:LINE: reason" (or "FILE: reason").
@@ -374,6 +374,6 @@ inline std::vector<std::string> edit_script_lines(const std::vector<Script_edit>
   return lines;
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H

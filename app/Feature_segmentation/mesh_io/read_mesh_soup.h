@@ -17,7 +17,7 @@
 #include <new>
 #include <string>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 inline std::string lower_case_extension(const std::string& path)
@@ -80,6 +80,6 @@ inline void read_mesh_soup(const std::string& path, Mesh_soup& soup)
   read_mesh_soup(path, format, content, soup);
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_MESH_SOUP_H

@@ -22,7 +22,7 @@
 #include <utility>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// A polyline with its type ("crease", "seam", "ridge", "valley", "user", "smoothed").
 struct Typed_polyline
@@ -188,6 +188,6 @@ inline void write_typed_OBJ_lines(std::ostream& os, const std::vector<Typed_poly
   }
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_TYPED_POLYLINES_H

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 inline void read_off(const std::string& path, const File_content& content, Mesh_soup& soup)
@@ -133,6 +133,6 @@ inline void read_off(const std::string& path, const File_content& content, Mesh_
 }
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OFF_H

@@ -63,7 +63,7 @@
 #include <string>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// A request the editor refuses; the message says why. The state is unchanged.
 class Request_error : public std::runtime_error
@@ -536,6 +536,6 @@ private:
   double m_last_server_seconds = 0;
 };
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_API_H

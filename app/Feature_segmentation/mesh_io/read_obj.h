@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 // The vertex part of a face reference (`i`, `i/t`, `i//n`, `i/t/n`), or `false` when the
@@ -105,6 +105,6 @@ inline void read_obj(const std::string& path, const File_content& content, Mesh_
 }
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OBJ_H

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 constexpr std::uint32_t no_corner = std::uint32_t(-1);
@@ -375,6 +375,6 @@ void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
 }
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_SOUP_TOPOLOGY_H

@@ -20,7 +20,7 @@
 
 #include <CGAL/assertions.h>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 /// A token of the file as it may appear in a message: at most 40 characters, anything
@@ -309,6 +309,6 @@ private:
 };
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TEXT_CURSOR_H

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 template <typename Mesh>
 std::size_t read_user_feature_lines(std::istream& in, const std::string& path, const Mesh& mesh,
@@ -142,6 +142,6 @@ std::size_t read_user_feature_lines(std::istream& in, const std::string& path, c
   return added;
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_READ_USER_FEATURE_LINES_H

@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 enum class Ply_kind { signed_integer, unsigned_integer, floating };
@@ -340,6 +340,6 @@ inline void read_ply(const std::string& path, const File_content& content, Mesh_
 }
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_PLY_H

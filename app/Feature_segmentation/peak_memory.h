@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-namespace fs_demo {
+namespace fs_app {
 
 // The peak resident memory since the start or the last reset, in MiB; -1 if unknown.
 inline double peak_resident_mib()
@@ -35,6 +35,6 @@ inline void reset_peak_resident()
   if(clear) clear << "5";
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_PEAK_MEMORY_H

@@ -30,7 +30,7 @@
 #include <utility>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 // Wall-clock seconds of each stage, in the order the stages ran.
 class Stage_timer
@@ -123,7 +123,7 @@ private:
 
 struct Results
 {
-  fs_demo::Read_report read_report;
+  fs_app::Read_report read_report;
   std::size_t number_of_vertices = 0;
   std::size_t number_of_edges = 0;
   std::size_t number_of_faces = 0;
@@ -142,7 +142,7 @@ struct Results
   std::size_t number_of_oversegments = 0;
   double solver_seconds = 0;               // of the automatic segmentation
   FS::internal::Stage_times segmentation_stages; // the seconds inside the stage "segmentation"
-  std::vector<fs_demo::Edit_record> edits;
+  std::vector<fs_app::Edit_record> edits;
   // The boundaries and their smoothing.
   std::size_t number_of_curves = 0;        // inside faces (smoothed)
   std::size_t number_of_crease_curves = 0; // on creases between two patches (exact)
@@ -270,6 +270,6 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
   os << summary.dump(2) << '\n';
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_RUN_REPORT_H

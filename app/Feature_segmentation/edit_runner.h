@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// What one edit did, for the summary.
 struct Edit_record
@@ -249,6 +249,6 @@ private:
   std::vector<face_descriptor> m_triangles;    // the mesh's faces in order, for 'triangles'
 };
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_RUNNER_H

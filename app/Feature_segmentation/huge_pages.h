@@ -30,7 +30,7 @@
 #include <unistd.h>
 #endif
 
-namespace fs_demo {
+namespace fs_app {
 
 /// Restarts the program with the heap's tunables if they help and are not set yet;
 /// returns (doing nothing) otherwise, or if the restart fails.
@@ -72,6 +72,6 @@ inline void use_huge_page_heap(int argc, char** argv)
 #endif
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_HUGE_PAGES_H

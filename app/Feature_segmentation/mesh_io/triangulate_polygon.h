@@ -21,7 +21,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 /// Polygons with more vertices are not triangulated (ear clipping is quadratic).
@@ -187,6 +187,6 @@ bool triangulate_polygon(typename boost::graph_traits<Mesh>::face_descriptor f, 
 }
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TRIANGULATE_POLYGON_H

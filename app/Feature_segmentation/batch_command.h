@@ -30,7 +30,7 @@
 #include <thread>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// One mesh of a batch: its row of the summary table.
 struct Batch_row
@@ -242,6 +242,6 @@ inline int run_batch(const Options& options)
   return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_BATCH_COMMAND_H

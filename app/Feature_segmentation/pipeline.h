@@ -54,7 +54,7 @@
 #include <utility>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 // Writes a file through `write`, atomically: into a temporary file next to it, renamed
 // over `path` once complete, so that an interrupted run never leaves a half-written file
@@ -184,7 +184,7 @@ public:
                                                                           : FS::default_strength_threshold)
               .detect_ridges(options.ridges)
               .detect_valleys(options.valleys));
-        results.number_of_user_lines = fs_demo::read_user_feature_lines(options.feature_edges_file, mesh, detected);
+        results.number_of_user_lines = fs_app::read_user_feature_lines(options.feature_edges_file, mesh, detected);
         return detected;
       });
       timer.run("segmentation", [&]() {
@@ -298,7 +298,7 @@ public:
   }
 
   /// The number of patches of the current segmentation that hold a face (face_patches()).
-  std::size_t number_of_face_patches() const { return fs_demo::number_of_face_patches(mesh, *segmentation); }
+  std::size_t number_of_face_patches() const { return fs_app::number_of_face_patches(mesh, *segmentation); }
 
   /// The points of a boundary curve; a closed one repeats its first.
   static std::vector<double> curve_coordinates(const FS::Boundary_curve<Mesh>& c)
@@ -504,6 +504,6 @@ inline Results segment_and_write(const Options& options)
   return results;
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_PIPELINE_H

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// A polygon soup exactly as in the file: points and faces in file order. Face `f` uses
 /// the points `indices[begin[f]] ... indices[begin[f + 1] - 1]`. Every index is below
@@ -145,6 +145,6 @@ inline std::string face_name(const Mesh_soup& soup, std::size_t f)
 }
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_MESH_SOUP_H

@@ -8,7 +8,7 @@
 #include <charconv>
 #include <string>
 
-namespace fs_demo {
+namespace fs_app {
 
 inline std::string number_text(double x)
 {
@@ -17,6 +17,6 @@ inline std::string number_text(double x)
   return std::string(buffer, r.ptr);
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_NUMBER_TEXT_H

@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -367,6 +367,6 @@ inline std::string segmentation_options_text(const Options& o)
   return t;
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace fs_demo {
+namespace fs_app {
 namespace internal {
 
 // STL stores each triangle's own points: a point equal to an earlier one is merged into
@@ -159,6 +159,6 @@ inline void read_stl(const std::string& path, const File_content& content, Mesh_
 }
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_STL_H

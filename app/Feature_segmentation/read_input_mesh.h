@@ -32,7 +32,7 @@
 #include <utility>
 #include <vector>
 
-namespace fs_demo {
+namespace fs_app {
 
 /// What reading did to the file's content, for the summary and the notice lines.
 struct Read_report
@@ -456,6 +456,6 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh)
   return read_input_mesh(path, mesh, correspondence);
 }
 
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H

@@ -30,7 +30,7 @@
 #define FS_DEMO_HAS_MMAP 0
 #endif
 
-namespace fs_demo {
+namespace fs_app {
 
 /// Bad input: `what()` is one line, "<file>: <reason>" or "<file>:<line>: <reason>".
 class Input_error : public std::runtime_error
@@ -145,6 +145,6 @@ private:
 };
 
 } // namespace internal
-} // namespace fs_demo
+} // namespace fs_app
 
 #endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_FILE_CONTENT_H
