@@ -7,8 +7,8 @@
 // a complete run) is skipped unless --force. A mesh that fails is recorded with its error
 // and the others go on.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_BATCH_COMMAND_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_BATCH_COMMAND_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_BATCH_COMMAND_H
+#define CGAL_FEATURE_SEGMENTATION_APP_BATCH_COMMAND_H
 
 #include "pipeline.h"
 #include "program_options.h"
@@ -244,4 +244,4 @@ inline int run_batch(const Options& options)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_BATCH_COMMAND_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_BATCH_COMMAND_H

@@ -4,8 +4,8 @@
 // applies its edits one by one to a Feature_aligned_segmentation, timing each
 // (Edit_runner, which the interactive editor shares, and Edit_record, what an edit did).
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_RUNNER_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_RUNNER_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_EDIT_RUNNER_H
+#define CGAL_FEATURE_SEGMENTATION_APP_EDIT_RUNNER_H
 
 #include "edit_script.h"
 #include "read_input_mesh.h"
@@ -251,4 +251,4 @@ private:
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_RUNNER_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_EDIT_RUNNER_H

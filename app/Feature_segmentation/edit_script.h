@@ -27,8 +27,8 @@
 // turns them into Script_edit and applies them with the same Edit_runner, and saves its
 // history as a script with `write_edit_script()`, so the two cannot drift.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_EDIT_SCRIPT_H
+#define CGAL_FEATURE_SEGMENTATION_APP_EDIT_SCRIPT_H
 
 #include "number_text.h"
 
@@ -376,4 +376,4 @@ inline std::vector<std::string> edit_script_lines(const std::vector<Script_edit>
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDIT_SCRIPT_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_EDIT_SCRIPT_H

@@ -36,8 +36,8 @@
 // non-finite number, a face index out of range, nothing to undo) throws Request_error
 // and changes nothing.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_API_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_API_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_EDITOR_API_H
+#define CGAL_FEATURE_SEGMENTATION_APP_EDITOR_API_H
 
 #include "edit_script.h"
 #include "pipeline.h"
@@ -538,4 +538,4 @@ private:
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_EDITOR_API_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_EDITOR_API_H

@@ -18,8 +18,8 @@
 //   2.18 GB (AMD EPYC, 2 cores).
 // Set FEATURE_SEGMENTATION_NO_HUGE_PAGES=1 to keep glibc's default heap.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_HUGE_PAGES_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_HUGE_PAGES_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_HUGE_PAGES_H
+#define CGAL_FEATURE_SEGMENTATION_APP_HUGE_PAGES_H
 
 #include <cstdlib>
 #include <cstring>
@@ -74,4 +74,4 @@ inline void use_huge_page_heap(int argc, char** argv)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_HUGE_PAGES_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_HUGE_PAGES_H

@@ -2,8 +2,8 @@
 // The shortest text that reads back as a double (0.85, not 0.84999999999999998): the
 // numbers of edit scripts, of the replay options and of the batch table.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_NUMBER_TEXT_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_NUMBER_TEXT_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_NUMBER_TEXT_H
+#define CGAL_FEATURE_SEGMENTATION_APP_NUMBER_TEXT_H
 
 #include <charconv>
 #include <string>
@@ -19,4 +19,4 @@ inline std::string number_text(double x)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_NUMBER_TEXT_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_NUMBER_TEXT_H

@@ -3,8 +3,8 @@
 // reset (writing 5 to /proc/self/clear_refs), so that each stage reports its own peak.
 // Elsewhere, or where /proc refuses, the peak is unknown (-1) and nothing is reset.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PEAK_MEMORY_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_PEAK_MEMORY_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_PEAK_MEMORY_H
+#define CGAL_FEATURE_SEGMENTATION_APP_PEAK_MEMORY_H
 
 #include <fstream>
 #include <sstream>
@@ -37,4 +37,4 @@ inline void reset_peak_resident()
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_PEAK_MEMORY_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_PEAK_MEMORY_H

@@ -4,8 +4,8 @@
 // mesh, patch files, summary.json). The timing of the stages and what summary.json holds
 // are in run_report.h.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PIPELINE_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_PIPELINE_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_PIPELINE_H
+#define CGAL_FEATURE_SEGMENTATION_APP_PIPELINE_H
 
 #include "edit_runner.h"
 #include "edit_script.h"
@@ -506,4 +506,4 @@ inline Results segment_and_write(const Options& options)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_PIPELINE_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_PIPELINE_H

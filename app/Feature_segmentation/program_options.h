@@ -3,8 +3,8 @@
 // command line by Boost.Program_options (subcommands `segment`, the default, `edit` and
 // `batch`), and the --help text.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_OPTIONS_H
+#define CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_OPTIONS_H
 
 #include "number_text.h"
 
@@ -369,4 +369,4 @@ inline std::string segmentation_options_text(const Options& o)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_OPTIONS_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_OPTIONS_H

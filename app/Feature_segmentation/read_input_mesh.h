@@ -9,8 +9,8 @@
 // repair is reported as a notice line. The repairs keep track of where each point and
 // face of the file went, so that results on the mesh can be written in the file's order.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_READ_INPUT_MESH_H
+#define CGAL_FEATURE_SEGMENTATION_APP_READ_INPUT_MESH_H
 
 #include "mesh_io/read_mesh_soup.h"
 #include "mesh_io/soup_topology.h"
@@ -458,4 +458,4 @@ Read_report read_input_mesh(const std::string& path, Mesh& mesh)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_READ_INPUT_MESH_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_READ_INPUT_MESH_H

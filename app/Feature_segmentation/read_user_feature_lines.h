@@ -6,8 +6,8 @@
 // each segment must then be a mesh edge, and each polyline becomes a feature line of
 // type USER whose points sit on mesh vertices. Errors are `Input_error`s naming the line.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_READ_USER_FEATURE_LINES_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_READ_USER_FEATURE_LINES_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_READ_USER_FEATURE_LINES_H
+#define CGAL_FEATURE_SEGMENTATION_APP_READ_USER_FEATURE_LINES_H
 
 #include "read_input_mesh.h"
 
@@ -144,4 +144,4 @@ std::size_t read_user_feature_lines(std::istream& in, const std::string& path, c
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_READ_USER_FEATURE_LINES_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_READ_USER_FEATURE_LINES_H

@@ -3,8 +3,8 @@
 // (Stage_timer), the solver timed on its own (Timed_solver), what the run measured
 // (Results) and summary.json, which writes it all (write_summary()).
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_RUN_REPORT_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_RUN_REPORT_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_RUN_REPORT_H
+#define CGAL_FEATURE_SEGMENTATION_APP_RUN_REPORT_H
 
 #include "edit_runner.h"
 #include "peak_memory.h"
@@ -272,4 +272,4 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_RUN_REPORT_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_RUN_REPORT_H

@@ -7,8 +7,8 @@
 // different patches, exactly on the mesh's edges). Written in CGAL's polylines format
 // with the types in a companion file, and as OBJ with one object per type.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_TYPED_POLYLINES_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_TYPED_POLYLINES_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_TYPED_POLYLINES_H
+#define CGAL_FEATURE_SEGMENTATION_APP_TYPED_POLYLINES_H
 
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
@@ -190,4 +190,4 @@ inline void write_typed_OBJ_lines(std::ostream& os, const std::vector<Typed_poly
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_TYPED_POLYLINES_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_TYPED_POLYLINES_H

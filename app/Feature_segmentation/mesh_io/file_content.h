@@ -3,8 +3,8 @@
 // file in memory, mapped or read, after check_regular_file()) and the one error they all
 // throw on bad input (Input_error).
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_FILE_CONTENT_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_FILE_CONTENT_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_FILE_CONTENT_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_FILE_CONTENT_H
 
 #include <cerrno>
 #include <cstddef>
@@ -147,4 +147,4 @@ private:
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_FILE_CONTENT_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_FILE_CONTENT_H

@@ -6,8 +6,8 @@
 // first problem with one `Input_error` naming the file and the line
 // ("<file>:<line>: <reason>"), so that a malformed file costs bounded time and memory.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_MESH_SOUP_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_MESH_SOUP_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_MESH_SOUP_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_MESH_SOUP_H
 
 #include "file_content.h"
 #include "text_cursor.h"
@@ -147,4 +147,4 @@ inline std::string face_name(const Mesh_soup& soup, std::size_t f)
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_MESH_SOUP_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_MESH_SOUP_H

@@ -2,8 +2,8 @@
 // Reads a mesh file of the programs into a polygon soup, choosing the reader by the
 // file's extension (.off, .obj, .ply, .stl, in any case).
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_MESH_SOUP_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_MESH_SOUP_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_MESH_SOUP_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_MESH_SOUP_H
 
 #include "mesh_soup.h"
 #include "read_obj.h"
@@ -82,4 +82,4 @@ inline void read_mesh_soup(const std::string& path, Mesh_soup& soup)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_MESH_SOUP_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_MESH_SOUP_H

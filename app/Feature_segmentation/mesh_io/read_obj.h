@@ -6,8 +6,8 @@
 // `p`, curves, and statements no reader knows) is skipped, as OBJ readers are expected
 // to do.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OBJ_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OBJ_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_OBJ_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_OBJ_H
 
 #include "mesh_soup.h"
 
@@ -107,4 +107,4 @@ inline void read_obj(const std::string& path, const File_content& content, Mesh_
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OBJ_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_OBJ_H

@@ -5,8 +5,8 @@
 // optional colour), '#' comments anywhere. The counts are checked against the size of
 // the file before anything is allocated.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OFF_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OFF_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_OFF_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_OFF_H
 
 #include "mesh_soup.h"
 
@@ -135,4 +135,4 @@ inline void read_off(const std::string& path, const File_content& content, Mesh_
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_OFF_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_OFF_H

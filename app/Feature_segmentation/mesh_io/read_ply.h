@@ -5,8 +5,8 @@
 // property (normals, colours, edges, materials, ...) skipped. The header's counts are
 // checked against the size of the body before anything is allocated.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_PLY_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_PLY_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_PLY_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_PLY_H
 
 #include "mesh_soup.h"
 
@@ -342,4 +342,4 @@ inline void read_ply(const std::string& path, const File_content& content, Mesh_
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_PLY_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_PLY_H

@@ -5,8 +5,8 @@
 // vertices. A file is binary when its size is exactly 84 + 50 n bytes for the n of its
 // header (some binary files also start with "solid"), ASCII when it starts with "solid".
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_STL_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_STL_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_STL_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_STL_H
 
 #include "mesh_soup.h"
 
@@ -161,4 +161,4 @@ inline void read_stl(const std::string& path, const File_content& content, Mesh_
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_READ_STL_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_READ_STL_H

@@ -7,8 +7,8 @@
 // mesh directly, halfedge by halfedge; one that needs reorienting or has pinched
 // vertices is left to CGAL's `orient_polygon_soup` by the caller.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_SOUP_TOPOLOGY_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_SOUP_TOPOLOGY_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_SOUP_TOPOLOGY_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_SOUP_TOPOLOGY_H
 
 #include "mesh_soup.h"
 
@@ -377,4 +377,4 @@ void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_SOUP_TOPOLOGY_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_SOUP_TOPOLOGY_H

@@ -3,8 +3,8 @@
 // parsing of the words it reads. Numbers are parsed with `std::from_chars`; no locale,
 // no stream, no copy of a line.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TEXT_CURSOR_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TEXT_CURSOR_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_TEXT_CURSOR_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_TEXT_CURSOR_H
 
 #include "file_content.h"
 
@@ -311,4 +311,4 @@ private:
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TEXT_CURSOR_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_TEXT_CURSOR_H

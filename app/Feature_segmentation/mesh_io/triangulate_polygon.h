@@ -7,8 +7,8 @@
 // or self-intersecting polygon the latter reads uninitialised memory and can leave the
 // mesh broken while reporting success. Here such a polygon is refused.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TRIANGULATE_POLYGON_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TRIANGULATE_POLYGON_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_TRIANGULATE_POLYGON_H
+#define CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_TRIANGULATE_POLYGON_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
@@ -189,4 +189,4 @@ bool triangulate_polygon(typename boost::graph_traits<Mesh>::face_descriptor f, 
 } // namespace internal
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_MESH_IO_TRIANGULATE_POLYGON_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_MESH_IO_TRIANGULATE_POLYGON_H
