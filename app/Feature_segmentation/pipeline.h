@@ -328,8 +328,6 @@ public:
     Stage_timer& timer = m_timer;
     namespace sfs = std::filesystem;
     std::error_code ec;
-    const FS::Feature_lines<Mesh>& lines = segmentation->feature_lines();
-    const Mesh& working_mesh = segmentation->working_mesh();
     // The boundaries of the final patches, in the metric of the weights, from the
     // segmentation's own precomputation (which knows the sketches' feature points).
     FS::Patch_boundaries<Mesh> boundaries =
@@ -356,32 +354,9 @@ public:
     segmentation->face_patches(boundaries, face_patch);
     const File_patches file = file_patches(boundaries);
 
-    // Every feature used, typed (creases and seams chained from the crease edges, then
-    // the crest lines and the user's lines), and every boundary between two patches (the
-    // curves inside faces, then the creases between two patches, on the mesh's edges).
-    std::vector<Typed_polyline> features, boundary_lines;
-    append_edge_chains(
-      mesh, [&](Mesh::Edge_index e) { return segmentation->is_crease_edge(e) && !segmentation->is_curvature_discontinuity_edge(e); },
-      "crease", features);
-    append_edge_chains(
-      mesh, [&](Mesh::Edge_index e) { return segmentation->is_curvature_discontinuity_edge(e); }, "seam", features);
-    append_feature_lines(working_mesh, lines, features);
-    for(const FS::Boundary_curve<Mesh>& c : boundaries.curves())
-    {
-      Typed_polyline p;
-      p.type = "smoothed";
-      p.is_closed = c.is_closed();
-      for(const auto& q : c.points) p.points.push_back({q.point[0], q.point[1], q.point[2]});
-      boundary_lines.push_back(std::move(p));
-    }
-    append_edge_chains(
-      mesh,
-      [&](Mesh::Edge_index e) {
-        const auto h = halfedge(e, mesh);
-        return segmentation->is_crease_edge(e) && !is_border_edge(h, mesh) &&
-               get(face_patch, face(h, mesh)) != get(face_patch, face(opposite(h, mesh), mesh));
-      },
-      "crease", boundary_lines);
+    // Every feature used, typed, and every boundary between two patches
+    const std::vector<Typed_polyline> features = typed_feature_lines(mesh, *segmentation);
+    const std::vector<Typed_polyline> boundary_lines = typed_boundary_lines(mesh, *segmentation, boundaries, face_patch);
     results.number_of_crease_lines = number_of_polylines(features, "crease");
     results.number_of_seam_lines = number_of_polylines(features, "seam");
     results.number_of_crease_curves = number_of_polylines(boundary_lines, "crease");

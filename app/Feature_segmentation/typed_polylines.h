@@ -13,6 +13,7 @@
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
 
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <array>
@@ -125,6 +126,50 @@ void append_feature_lines(const Mesh& mesh, const CGAL::Feature_segmentation::Fe
     }
     out.push_back(std::move(p));
   }
+}
+
+// Every feature that a segmentation `seg` of `mesh` uses, typed: the crease edges chained
+// into "crease" lines, the curvature discontinuities into "seam" lines, then its feature
+// lines (crest lines, the user's lines and sketches: append_feature_lines) on its
+// working mesh.
+template <typename Mesh, typename Segmentation>
+std::vector<Typed_polyline> typed_feature_lines(const Mesh& mesh, const Segmentation& seg)
+{
+  std::vector<Typed_polyline> features;
+  append_edge_chains(
+    mesh, [&](typename Mesh::Edge_index e) { return seg.is_crease_edge(e) && !seg.is_curvature_discontinuity_edge(e); },
+    "crease", features);
+  append_edge_chains(
+    mesh, [&](typename Mesh::Edge_index e) { return seg.is_curvature_discontinuity_edge(e); }, "seam", features);
+  append_feature_lines(seg.working_mesh(), seg.feature_lines(), features);
+  return features;
+}
+
+// Every boundary between two patches of `seg`, typed: the curves of `boundaries`
+// ("smoothed", inside faces), then the crease edges between two faces of different
+// patches of `face_patch` chained into "crease" lines, on the mesh's edges.
+template <typename Mesh, typename Segmentation, typename Boundaries, typename FacePatchMap>
+std::vector<Typed_polyline> typed_boundary_lines(const Mesh& mesh, const Segmentation& seg,
+                                                 const Boundaries& boundaries, FacePatchMap face_patch)
+{
+  std::vector<Typed_polyline> lines;
+  for(const auto& c : boundaries.curves())
+  {
+    Typed_polyline p;
+    p.type = "smoothed";
+    p.is_closed = c.is_closed();
+    for(const auto& q : c.points) p.points.push_back({q.point[0], q.point[1], q.point[2]});
+    lines.push_back(std::move(p));
+  }
+  append_edge_chains(
+    mesh,
+    [&](typename Mesh::Edge_index e) {
+      const auto h = halfedge(e, mesh);
+      return seg.is_crease_edge(e) && !is_border_edge(h, mesh) &&
+             get(face_patch, face(h, mesh)) != get(face_patch, face(opposite(h, mesh), mesh));
+    },
+    "crease", lines);
+  return lines;
 }
 
 /// The number of polylines of `type`.
