@@ -344,6 +344,14 @@ std::string machine_description()
   return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores (one used)";
 }
 
+// The CSV names of the CAD table's columns (cad_methods()), separated by commas.
+std::string method_names()
+{
+  std::string names;
+  for(const auto& m : cad_methods()) names += (names.empty() ? "" : ", ") + m.first;
+  return names;
+}
+
 // Reads the command line into `opt`. Returns the exit status when the program is to stop
 // there (0 after --help, 2 for a wrong command line), else nothing.
 std::optional<int> read_command_line(int argc, char** argv, Options& opt)
@@ -369,7 +377,7 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
      "CAD table: the folder of the generated parts (NAME.obj and NAME.labels, made by the target generated_parts)")
     ("no-robustness", po::bool_switch(&no_robustness), "quality table: without the noise columns")
     ("methods", po::value(&methods)->value_name("NAME[,NAME...]"),
-     "CAD table: only these columns (default, paper, sharp20, sharp45, sharp60, ransac, vsa); default: all")
+     ("CAD table: only these columns (" + method_names() + "); default: all").c_str())
     ("noise", po::value(&noise)->value_name("X,Y,...")->default_value(noise),
      "CAD table: the noise levels, standard deviations as fractions of the diagonal")
     ("alpha", po::value(&cad.alpha)->value_name("A")->default_value(cad.alpha, plain(cad.alpha)),
@@ -423,8 +431,7 @@ std::optional<int> read_command_line(int argc, char** argv, Options& opt)
     {
       const auto& known = cad_methods();
       if(std::none_of(known.begin(), known.end(), [&](const auto& m) { return m.first == name; }))
-        throw po::error("--methods takes names among default, paper, sharp20, sharp45, sharp60, ransac, vsa (got '" +
-                        name + "')");
+        throw po::error("--methods takes names among " + method_names() + " (got '" + name + "')");
       cad.methods.insert(name);
     }
   }
