@@ -114,11 +114,48 @@ Feature_lines<TriangleMesh> detect_crest_lines(const Mesh_indexing<TriangleMesh>
 ///         `Principal_curvatures<GeomTraits>` (filled e.g. by `estimate_principal_curvatures()`)
 /// \param tm the mesh (checked with `check_input_mesh()`)
 /// \param curvature_map the curvatures
-/// \param np optional named parameters:
-///   - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-///   - `strength_threshold` (double, >= 0): default `default_strength_threshold`
-///   - `umbilic_ratio` (double in [0, 1)): default 0.1
-///   - `detect_ridges`, `detect_valleys` (bool): default `true`
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{strength_threshold}
+///     \cgalParamDescription{the crest lines whose strength (the integral of \f$ \vert k \vert \f$ along the
+///                           line) is below it are dropped}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`default_strength_threshold` (1.0)}
+///     \cgalParamExtra{A negative or non-finite value throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{umbilic_ratio}
+///     \cgalParamDescription{the zero crossings near umbilics, where \f$ \vert k \vert - \vert k_{other}
+///                           \vert \leq \f$ `umbilic_ratio` \f$ \cdot \vert k \vert \f$, are dropped: there
+///                           the principal directions are noise}
+///     \cgalParamType{`double` in [0, 1)}
+///     \cgalParamDefault{`0.1`}
+///     \cgalParamExtra{A value outside [0, 1) throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_ridges}
+///     \cgalParamDescription{whether ridges (maxima of `k_max` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_valleys}
+///     \cgalParamDescription{whether valleys (minima of `k_min` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and `Point_3` as
+///                    value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t` must
+///                     be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return the lines, strongest first
 /// \throws Invalid_input on a bad mesh or a bad option value
 template <typename TriangleMesh, typename VertexCurvatureMap,
@@ -142,9 +179,95 @@ detect_crest_lines(const TriangleMesh& tm, VertexCurvatureMap curvature_map,
 /// \tparam EdgeIsFeatureMap a `ReadWritePropertyMap` from `edge_descriptor` to `bool`
 /// \param tm the mesh (checked with `check_input_mesh()`)
 /// \param edge_is_feature the output: `true` on the feature edges, `false` elsewhere
-/// \param np the named parameters of `estimate_principal_curvatures()` and
-///        `detect_crest_lines()`, and `principal_curvature_map` (a vertex map of
-///        `Principal_curvatures<GeomTraits>`): when given, it is used as is
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{principal_curvature_map}
+///     \cgalParamDescription{the principal curvatures of the vertices, used instead of estimating them}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and
+///                    `Principal_curvatures<GeomTraits>` as value type}
+///     \cgalParamDefault{estimated as by `estimate_principal_curvatures()`, with `neighborhood_rings`,
+///                       `neighborhood_radius` and `concurrency_tag`}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{strength_threshold}
+///     \cgalParamDescription{the crest lines whose strength (the integral of \f$ \vert k \vert \f$ along the
+///                           line) is below it are dropped}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`default_strength_threshold` (1.0)}
+///     \cgalParamExtra{A negative or non-finite value throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{umbilic_ratio}
+///     \cgalParamDescription{the zero crossings near umbilics, where \f$ \vert k \vert - \vert k_{other}
+///                           \vert \leq \f$ `umbilic_ratio` \f$ \cdot \vert k \vert \f$, are dropped: there
+///                           the principal directions are noise}
+///     \cgalParamType{`double` in [0, 1)}
+///     \cgalParamDefault{`0.1`}
+///     \cgalParamExtra{A value outside [0, 1) throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_ridges}
+///     \cgalParamDescription{whether ridges (maxima of `k_max` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_valleys}
+///     \cgalParamDescription{whether valleys (minima of `k_min` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{the number of rings of neighbours of a vertex that the curvature fit takes: the
+///                           scale of the features on coarse meshes}
+///     \cgalParamType{an integer type, at least 1}
+///     \cgalParamDefault{`2`}
+///     \cgalParamExtra{A value below 1 throws `Invalid_input`. Used only when `principal_curvature_map` is
+///                     not given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{neighborhood_radius}
+///     \cgalParamDescription{beyond the rings, the curvature fit also takes the vertices within this fraction
+///                           of the bounding-box diagonal whose normals are within 30 degrees of the vertex
+///                           normal: the scale of the features on fine meshes; 0: rings only}
+///     \cgalParamType{`double` in [0, 1]}
+///     \cgalParamDefault{`default_neighborhood_radius` (0.01)}
+///     \cgalParamExtra{A value outside [0, 1] throws `Invalid_input`. Used only when
+///                     `principal_curvature_map` is not given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{concurrency_tag}
+///     \cgalParamDescription{a tag indicating whether the curvature fits run sequentially or on TBB's
+///                           threads}
+///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
+///     \cgalParamDefault{`CGAL::Sequential_tag`}
+///     \cgalParamExtra{With `CGAL::Parallel_tag` the program must link TBB (e.g. `CGAL::TBB_support`);
+///                     `tbb::global_control` bounds the number of threads. The result is the same at any
+///                     thread count. Used only when `principal_curvature_map` is not given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and `Point_3` as
+///                    value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t` must
+///                     be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type, deduced with `CGAL::Kernel_traits`}
+///     \cgalParamExtra{The geometric traits class must be compatible with the vertex point type. Only its
+///                     types are used (`FT`, `Point_3`, `Vector_3`: the value type of the curvature map is
+///                     `Principal_curvatures<GeomTraits>`); the computations are done in `double`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return the lines, strongest first
 template <typename TriangleMesh, typename EdgeIsFeatureMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -43,12 +43,169 @@ namespace Feature_segmentation {
 /// \param tm the mesh (checked with `check_input_mesh()`)
 /// \param similarity the output `Similarity(e)`
 /// \param award the output `Award(e)`
-/// \param np optional named parameters: `vertex_point_map`, `geom_traits`, `gamma`
-///   (default 0.05), `principal_curvature_map` (else estimated with
-///   `neighborhood_rings` and `neighborhood_radius`), `feature_lines` (a `Feature_lines<TriangleMesh>`) and/or
-///   `edge_is_feature_map` (else crest lines are detected with the options of
-///   `detect_crest_lines()`), `concurrency_tag` (`CGAL::Parallel_tag`: the curvature
-///   fits and the terms of the faces and edges on TBB's threads, the same values)
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{gamma}
+///     \cgalParamDescription{the anisotropy \f$ \gamma \f$ of the curvature metric (Eq. 6), whose eigenvalues
+///                           are 1 and \f$ 1/(1 + \gamma s)^2 \f$ with \f$ s = \vert k_1 \vert - \vert k_2
+///                           \vert \f$, the curvatures being those of the mesh scaled to a largest
+///                           bounding-box side of 1}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`default_gamma` (0.05)}
+///     \cgalParamExtra{A negative or non-finite value throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{principal_curvature_map}
+///     \cgalParamDescription{the principal curvatures of the vertices, used instead of estimating them}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and
+///                    `Principal_curvatures<GeomTraits>` as value type}
+///     \cgalParamDefault{estimated as by `estimate_principal_curvatures()`, with `neighborhood_rings`,
+///                       `neighborhood_radius` and `concurrency_tag`}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{feature_lines}
+///     \cgalParamDescription{the feature lines to follow (e.g. the user's), whose points place the dual
+///                           vertices}
+///     \cgalParamType{`Feature_lines<TriangleMesh>`}
+///     \cgalParamDefault{the detected crest lines (with `strength_threshold`, `umbilic_ratio`,
+///                       `detect_ridges` and `detect_valleys`)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{edge_is_feature_map}
+///     \cgalParamDescription{the feature edges: with `feature_lines`, the features are the union of these
+///                           edges and the edges the lines cross; alone, no crest lines are detected and a
+///                           feature edge contributes its midpoint}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::edge_descriptor` as key type and `bool` as value
+///                    type}
+///     \cgalParamDefault{the edges of the lines (those that `feature_lines`, or else the detected crest
+///                       lines, cross)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{strength_threshold}
+///     \cgalParamDescription{the crest lines whose strength (the integral of \f$ \vert k \vert \f$ along the
+///                           line) is below it are dropped}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`default_strength_threshold` (1.0)}
+///     \cgalParamExtra{A negative or non-finite value throws `Invalid_input`. Used only when neither
+///                     `feature_lines` nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{umbilic_ratio}
+///     \cgalParamDescription{the zero crossings near umbilics, where \f$ \vert k \vert - \vert k_{other}
+///                           \vert \leq \f$ `umbilic_ratio` \f$ \cdot \vert k \vert \f$, are dropped: there
+///                           the principal directions are noise}
+///     \cgalParamType{`double` in [0, 1)}
+///     \cgalParamDefault{`0.1`}
+///     \cgalParamExtra{A value outside [0, 1) throws `Invalid_input`. Used only when neither `feature_lines`
+///                     nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_ridges}
+///     \cgalParamDescription{whether ridges (maxima of `k_max` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///     \cgalParamExtra{Used only when neither `feature_lines` nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_valleys}
+///     \cgalParamDescription{whether valleys (minima of `k_min` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///     \cgalParamExtra{Used only when neither `feature_lines` nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{the number of rings of neighbours of a vertex that the curvature fit takes: the
+///                           scale of the features on coarse meshes}
+///     \cgalParamType{an integer type, at least 1}
+///     \cgalParamDefault{`2`}
+///     \cgalParamExtra{A value below 1 throws `Invalid_input`. Used only when `principal_curvature_map` is
+///                     not given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{neighborhood_radius}
+///     \cgalParamDescription{beyond the rings, the curvature fit also takes the vertices within this fraction
+///                           of the bounding-box diagonal whose normals are within 30 degrees of the vertex
+///                           normal: the scale of the features on fine meshes; 0: rings only}
+///     \cgalParamType{`double` in [0, 1]}
+///     \cgalParamDefault{`default_neighborhood_radius` (0.01)}
+///     \cgalParamExtra{A value outside [0, 1] throws `Invalid_input`. Used only when
+///                     `principal_curvature_map` is not given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{concurrency_tag}
+///     \cgalParamDescription{a tag indicating whether the curvature fits and the terms of the faces and edges
+///                           (their metrics, Similarity and Award) run sequentially or on TBB's threads}
+///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
+///     \cgalParamDefault{`CGAL::Sequential_tag`}
+///     \cgalParamExtra{With `CGAL::Parallel_tag` the program must link TBB (e.g. `CGAL::TBB_support`);
+///                     `tbb::global_control` bounds the number of threads. The result is the same at any
+///                     thread count.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{alpha}
+///     \cgalParamDescription{the global parameter \f$ \alpha \f$ of the segmentation: only checked here, the
+///                           result does not depend on it}
+///     \cgalParamType{`double`, finite}
+///     \cgalParamDefault{`default_alpha` (0.6)}
+///     \cgalParamExtra{A non-finite value throws `Invalid_input`. `edge_alpha_map` is not read.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{crease_angle}
+///     \cgalParamDescription{the crease angle of the segmentation (in degrees): only checked here; this
+///                           function works on `tm` as it is, not cut open along its creases}
+///     \cgalParamType{`double`, above 0}
+///     \cgalParamDefault{`default_crease_angle` (20)}
+///     \cgalParamExtra{A value that is not a finite number above 0 throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{crease_filter_iterations}
+///     \cgalParamDescription{the rounds of the segmentation's normal filter before its creases are found:
+///                           only checked here; this function works on `tm` as it is, not cut open along its
+///                           creases}
+///     \cgalParamType{an integer type, 0 to 1000}
+///     \cgalParamDefault{`default_crease_filter_iterations` (40)}
+///     \cgalParamExtra{A value outside 0 to 1000 throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{tangent_discontinuities}
+///     \cgalParamDescription{the segmentation's option that makes the curvature discontinuities of CAD
+///                           tessellations creases: read, but without effect here; this function works on
+///                           `tm` as it is, not cut open along its creases}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`default_tangent_discontinuities` (`true`)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{crest_lines_on_clean_tessellations}
+///     \cgalParamDescription{the segmentation's option that gives the crest lines of CAD tessellations the
+///                           full \f$ \alpha \f$: read, but without effect here; this function works on `tm`
+///                           as it is, not cut open along its creases}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`default_crest_lines_on_clean_tessellations` (`false`)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and `Point_3` as
+///                    value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t` must
+///                     be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type, deduced with `CGAL::Kernel_traits`}
+///     \cgalParamExtra{The geometric traits class must be compatible with the vertex point type. Only its
+///                     types are used (`FT`, `Point_3`, `Vector_3`: the value type of the curvature map is
+///                     `Principal_curvatures<GeomTraits>`); the computations are done in `double`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename SimilarityMap, typename AwardMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void compute_similarity_and_award(const TriangleMesh& tm, SimilarityMap similarity, AwardMap award,
@@ -73,9 +230,177 @@ void compute_similarity_and_award(const TriangleMesh& tm, SimilarityMap similari
 /// \param tm the mesh
 /// \param weight the output, a `WritablePropertyMap` from `edge_descriptor` to a
 ///        floating-point type
-/// \param np the named parameters of `compute_similarity_and_award()`, and `alpha`
-///        (default 0.6) or `edge_alpha_map` (a `ReadablePropertyMap` from
-///        `edge_descriptor` to `double`)
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{alpha}
+///     \cgalParamDescription{the global parameter \f$ \alpha \f$, the \f$ \alpha_e \f$ of the feature edges}
+///     \cgalParamType{`double`, finite}
+///     \cgalParamDefault{`default_alpha` (0.6)}
+///     \cgalParamExtra{A non-finite value throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{edge_alpha_map}
+///     \cgalParamDescription{the \f$ \alpha_e \f$ of every edge, overriding `alpha`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::edge_descriptor` as key type and `double` (finite)
+///                    as value type}
+///     \cgalParamDefault{`alpha` on feature edges, 0 elsewhere}
+///     \cgalParamExtra{A non-finite value throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{gamma}
+///     \cgalParamDescription{the anisotropy \f$ \gamma \f$ of the curvature metric (Eq. 6), whose eigenvalues
+///                           are 1 and \f$ 1/(1 + \gamma s)^2 \f$ with \f$ s = \vert k_1 \vert - \vert k_2
+///                           \vert \f$, the curvatures being those of the mesh scaled to a largest
+///                           bounding-box side of 1}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`default_gamma` (0.05)}
+///     \cgalParamExtra{A negative or non-finite value throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{principal_curvature_map}
+///     \cgalParamDescription{the principal curvatures of the vertices, used instead of estimating them}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and
+///                    `Principal_curvatures<GeomTraits>` as value type}
+///     \cgalParamDefault{estimated as by `estimate_principal_curvatures()`, with `neighborhood_rings`,
+///                       `neighborhood_radius` and `concurrency_tag`}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{feature_lines}
+///     \cgalParamDescription{the feature lines to follow (e.g. the user's), whose points place the dual
+///                           vertices}
+///     \cgalParamType{`Feature_lines<TriangleMesh>`}
+///     \cgalParamDefault{the detected crest lines (with `strength_threshold`, `umbilic_ratio`,
+///                       `detect_ridges` and `detect_valleys`)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{edge_is_feature_map}
+///     \cgalParamDescription{the feature edges: with `feature_lines`, the features are the union of these
+///                           edges and the edges the lines cross; alone, no crest lines are detected and a
+///                           feature edge contributes its midpoint}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::edge_descriptor` as key type and `bool` as value
+///                    type}
+///     \cgalParamDefault{the edges of the lines (those that `feature_lines`, or else the detected crest
+///                       lines, cross)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{strength_threshold}
+///     \cgalParamDescription{the crest lines whose strength (the integral of \f$ \vert k \vert \f$ along the
+///                           line) is below it are dropped}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`default_strength_threshold` (1.0)}
+///     \cgalParamExtra{A negative or non-finite value throws `Invalid_input`. Used only when neither
+///                     `feature_lines` nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{umbilic_ratio}
+///     \cgalParamDescription{the zero crossings near umbilics, where \f$ \vert k \vert - \vert k_{other}
+///                           \vert \leq \f$ `umbilic_ratio` \f$ \cdot \vert k \vert \f$, are dropped: there
+///                           the principal directions are noise}
+///     \cgalParamType{`double` in [0, 1)}
+///     \cgalParamDefault{`0.1`}
+///     \cgalParamExtra{A value outside [0, 1) throws `Invalid_input`. Used only when neither `feature_lines`
+///                     nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_ridges}
+///     \cgalParamDescription{whether ridges (maxima of `k_max` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///     \cgalParamExtra{Used only when neither `feature_lines` nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{detect_valleys}
+///     \cgalParamDescription{whether valleys (minima of `k_min` along its direction) are detected}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///     \cgalParamExtra{Used only when neither `feature_lines` nor `edge_is_feature_map` is given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{the number of rings of neighbours of a vertex that the curvature fit takes: the
+///                           scale of the features on coarse meshes}
+///     \cgalParamType{an integer type, at least 1}
+///     \cgalParamDefault{`2`}
+///     \cgalParamExtra{A value below 1 throws `Invalid_input`. Used only when `principal_curvature_map` is
+///                     not given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{neighborhood_radius}
+///     \cgalParamDescription{beyond the rings, the curvature fit also takes the vertices within this fraction
+///                           of the bounding-box diagonal whose normals are within 30 degrees of the vertex
+///                           normal: the scale of the features on fine meshes; 0: rings only}
+///     \cgalParamType{`double` in [0, 1]}
+///     \cgalParamDefault{`default_neighborhood_radius` (0.01)}
+///     \cgalParamExtra{A value outside [0, 1] throws `Invalid_input`. Used only when
+///                     `principal_curvature_map` is not given.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{concurrency_tag}
+///     \cgalParamDescription{a tag indicating whether the curvature fits and the terms of the faces and edges
+///                           (their metrics, Similarity and Award) run sequentially or on TBB's threads}
+///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
+///     \cgalParamDefault{`CGAL::Sequential_tag`}
+///     \cgalParamExtra{With `CGAL::Parallel_tag` the program must link TBB (e.g. `CGAL::TBB_support`);
+///                     `tbb::global_control` bounds the number of threads. The result is the same at any
+///                     thread count.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{crease_angle}
+///     \cgalParamDescription{the crease angle of the segmentation (in degrees): only checked here; this
+///                           function works on `tm` as it is, not cut open along its creases}
+///     \cgalParamType{`double`, above 0}
+///     \cgalParamDefault{`default_crease_angle` (20)}
+///     \cgalParamExtra{A value that is not a finite number above 0 throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{crease_filter_iterations}
+///     \cgalParamDescription{the rounds of the segmentation's normal filter before its creases are found:
+///                           only checked here; this function works on `tm` as it is, not cut open along its
+///                           creases}
+///     \cgalParamType{an integer type, 0 to 1000}
+///     \cgalParamDefault{`default_crease_filter_iterations` (40)}
+///     \cgalParamExtra{A value outside 0 to 1000 throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{tangent_discontinuities}
+///     \cgalParamDescription{the segmentation's option that makes the curvature discontinuities of CAD
+///                           tessellations creases: read, but without effect here; this function works on
+///                           `tm` as it is, not cut open along its creases}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`default_tangent_discontinuities` (`true`)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{crest_lines_on_clean_tessellations}
+///     \cgalParamDescription{the segmentation's option that gives the crest lines of CAD tessellations the
+///                           full \f$ \alpha \f$: read, but without effect here; this function works on `tm`
+///                           as it is, not cut open along its creases}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`default_crest_lines_on_clean_tessellations` (`false`)}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and `Point_3` as
+///                    value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t` must
+///                     be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type, deduced with `CGAL::Kernel_traits`}
+///     \cgalParamExtra{The geometric traits class must be compatible with the vertex point type. Only its
+///                     types are used (`FT`, `Point_3`, `Vector_3`: the value type of the curvature map is
+///                     `Principal_curvatures<GeomTraits>`); the computations are done in `double`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return the number of feature edges
 template <typename TriangleMesh, typename WeightMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>

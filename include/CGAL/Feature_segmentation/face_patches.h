@@ -107,10 +107,28 @@ double snapping_ratio(const NamedParameters& np)
 /// \param out the output mesh, to which the refined mesh is added (normally empty:
 ///        property maps of `out` stay valid, which clearing it would not guarantee)
 /// \param face_patch_map the patch of every face of `out`
-/// \param np optional named parameters:
-///   - `snapping_ratio` (double in [0, 0.5)): default 0.1
-///   - `edge_is_constrained_map`: an optional output, a `WritablePropertyMap` from the
-///     output's `edge_descriptor` to `bool`, `true` exactly on the boundary edges
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{snapping_ratio}
+///     \cgalParamDescription{a boundary point closer than this fraction of its edge's length to one of the
+///                           edge's ends is snapped to that vertex; a new vertex inside a face has
+///                           barycentric coordinates of at least this value}
+///     \cgalParamType{`double` in [0, 0.5)}
+///     \cgalParamDefault{`0.1`}
+///     \cgalParamExtra{A value outside [0, 0.5) throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{an optional output: `true` exactly on the boundary edges of the refined mesh
+///                           (the edges between faces of two different patches), `false` on its other edges}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<OutputMesh>::edge_descriptor` as key type and `bool` as value
+///                    type}
+///     \cgalParamDefault{none (no output)}
+///     \cgalParamExtra{Every edge of `out` is written, also those `out` had before.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return the number of faces of the input that were split
 ///
 /// \throws Invalid_input if `snapping_ratio` is outside [0, 0.5)

@@ -55,8 +55,19 @@ struct Mesh_check_report
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \param tm the mesh
 /// \param allow_degenerate_faces whether zero-area faces are accepted
-/// \param np an optional sequence of named parameters among: `vertex_point_map`,
-///        `geom_traits`
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and `Point_3` as
+///                    value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t` must
+///                     be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Mesh_check_report check_input_mesh(const TriangleMesh& tm,

@@ -143,10 +143,10 @@ void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, Verte
 /// bounding box diagonal whose normals are within 30 degrees of the vertex normal (so it
 /// does not wrap round a thin wall), thinned evenly to 32 neighbours when larger. A
 /// finer tessellation of the same shape is thus fitted over the same surface and gives
-/// the same crest lines. Where the radius spans 8 mean edge lengths or more, the search
-/// beyond the rings goes over connected clusters of vertices about a quarter of the
-/// radius across, each standing for one of its vertices, so that its cost does not grow
-/// with the resolution.
+/// the same crest lines. Where the radius spans 3 mean edge lengths or more, the search
+/// beyond the rings goes over connected clusters of vertices, sized so that the ball
+/// holds about 16 of them, each standing for one of its vertices, so that its cost does
+/// not grow with the resolution.
 /// The derivatives follow Yoshizawa, Belyaev and Seidel 2005: the gradient of the signed
 /// fields `k_max` and `k_min`, linear over each triangle, is averaged over the faces
 /// around the vertex (weighted by area) and projected on the direction. Using positions
@@ -163,17 +163,55 @@ void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, Verte
 ///         `Principal_curvatures<GeomTraits>` as value
 /// \param tm a triangle mesh (checked with `check_input_mesh()`: throws `Invalid_input`)
 /// \param curvature_map the output
-/// \param np optional named parameters:
-///   - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-///   - `geom_traits`: default the kernel of the point type
-///   - `neighborhood_rings` (unsigned int, at least 1): default 2
-///   - `neighborhood_radius` (double in [0, 1], a fraction of the bounding box diagonal;
-///     0: rings only): default `default_neighborhood_radius`
-///   - `concurrency_tag` (`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
-///     `CGAL::Parallel_if_available_tag`): with `CGAL::Parallel_tag` the vertices are
-///     fitted by TBB's threads (the program must link TBB, e.g. `CGAL::TBB_support`;
-///     `tbb::global_control` bounds their number); the result is the same at any
-///     thread count. Default `CGAL::Sequential_tag`
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{the number of rings of neighbours of a vertex that the curvature fit takes:
+///                           the scale of the features on coarse meshes}
+///     \cgalParamType{an integer type, at least 1}
+///     \cgalParamDefault{`2`}
+///     \cgalParamExtra{A value below 1 throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{neighborhood_radius}
+///     \cgalParamDescription{beyond the rings, the curvature fit also takes the vertices within this
+///                           fraction of the bounding-box diagonal whose normals are within 30 degrees of
+///                           the vertex normal: the scale of the features on fine meshes; 0: rings only}
+///     \cgalParamType{`double` in [0, 1]}
+///     \cgalParamDefault{`default_neighborhood_radius` (0.01)}
+///     \cgalParamExtra{A value outside [0, 1] throws `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{concurrency_tag}
+///     \cgalParamDescription{a tag indicating whether the curvature fits run sequentially or on TBB's
+///                           threads}
+///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
+///     \cgalParamDefault{`CGAL::Sequential_tag`}
+///     \cgalParamExtra{With `CGAL::Parallel_tag` the program must link TBB (e.g. `CGAL::TBB_support`);
+///                     `tbb::global_control` bounds the number of threads. The result is the same at any
+///                     thread count.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and `Point_3` as
+///                    value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+///                     must be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type, deduced with `CGAL::Kernel_traits`}
+///     \cgalParamExtra{The geometric traits class must be compatible with the vertex point type. Only its
+///                     types are used (`FT`, `Point_3`, `Vector_3`: the value type of the curvature map is
+///                     `Principal_curvatures<GeomTraits>`); the computations are done in `double`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename VertexCurvatureMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void estimate_principal_curvatures(const TriangleMesh& tm,

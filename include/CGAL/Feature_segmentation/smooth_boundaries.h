@@ -91,14 +91,27 @@ struct Boundary_smoothing_report
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \param boundaries the boundaries, from `compute_patch_boundaries()`; changed in place
-/// \param np optional named parameters:
-///   - `smoothing_iterations` (integer >= 0): the largest number of iterations,
-///     default 20 (the authors' tool runs 3 Jacobi iterations; Gauss-Seidel with
-///     extrapolation converges much faster per iteration, but a boundary that has to
-///     shift sideways as a whole, e.g. onto a crease a triangle away, takes about 20)
-///   - `smoothing_tolerance` (double >= 0): stop when an iteration lowers the energy by
-///     at most this fraction of it, default 1e-4; 0 runs all iterations unless the
-///     energy stops changing
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{smoothing_iterations}
+///     \cgalParamDescription{the largest number of iterations}
+///     \cgalParamType{an integer type, at least 0}
+///     \cgalParamDefault{`default_smoothing_iterations` (20)}
+///     \cgalParamExtra{The authors' tool runs 3 Jacobi iterations; Gauss-Seidel with extrapolation converges
+///                     much faster per iteration, but a boundary that has to shift sideways as a whole, e.g.
+///                     onto a crease a triangle away, takes about 20. A negative value throws
+///                     `Invalid_input`.}
+///   \cgalParamNEnd
+///
+///   \cgalParamNBegin{smoothing_tolerance}
+///     \cgalParamDescription{stop when an iteration lowers the energy by at most this fraction of it; 0 runs
+///                           all the iterations unless the energy stops changing}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`1e-4`}
+///     \cgalParamExtra{A negative or non-finite value throws `Invalid_input`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return the energy and length after every iteration
 ///
 /// \throws Invalid_input if `smoothing_iterations` is negative or

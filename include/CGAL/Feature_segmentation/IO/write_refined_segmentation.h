@@ -37,8 +37,19 @@ struct Refined_segmentation_sizes
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \param os the output stream
 /// \param boundaries the boundaries
-/// \param np optional named parameters:
-///   - `snapping_ratio` (double in [0, 0.5)): default 0.1, as `refine_mesh_along_boundaries()`
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{snapping_ratio}
+///     \cgalParamDescription{a boundary point closer than this fraction of its edge's length to one of the
+///                           edge's ends is snapped to that vertex; a new vertex inside a face has
+///                           barycentric coordinates of at least this value}
+///     \cgalParamType{`double` in [0, 0.5)}
+///     \cgalParamDefault{`0.1`}
+///     \cgalParamExtra{A value outside [0, 0.5) throws `Invalid_input`. As for
+///                     `refine_mesh_along_boundaries()`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return the sizes of the refined mesh and the number of input faces split; the
 ///         caller checks `os` for errors
 ///

@@ -138,8 +138,19 @@ void write_PLY_segmentation_face(std::ostream& os, std::vector<char>& line, std:
 /// \param os the output stream
 /// \param tm the mesh
 /// \param face_patch_map the patch of every face
-/// \param np an optional sequence of named parameters among:
-///   - `vertex_point_map`: default `get_const_property_map(CGAL::vertex_point, tm)`
+/// \param np an optional sequence of \ref fs_api_np "named parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type and `Point_3` as
+///                    value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///     \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t` must
+///                     be available in `TriangleMesh`.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return `true` if the stream is still good after writing
 template <typename TriangleMesh, typename FacePatchMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
