@@ -11,7 +11,7 @@
 #define CGAL_FEATURE_SEGMENTATION_APP_BATCH_COMMAND_H
 
 #include "pipeline.h"
-#include "program_options.h"
+#include "option_table.h"
 
 #include <nlohmann/json.hpp>
 

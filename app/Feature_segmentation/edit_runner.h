@@ -89,13 +89,28 @@ public:
   std::size_t number_of_undoable_edits() const { return m_done.size(); }
   std::size_t number_of_redoable_edits() const { return m_undone.size(); }
 
-  /// Applies `e`.
-  /// \throws Edit_script_error if the library refuses the edit
+  /// Applies the edit `e` of `script`.
+  /// \throws Edit_script_error "FILE:LINE: verb: reason" if the edit is refused
   Edit_record apply(const Edit_script& script, const Script_edit& e)
+  {
+    try
+    {
+      return apply(e);
+    }
+    catch(const Edit_refused& refused)
+    {
+      throw Edit_script_error(internal::script_place(script.path, e.line) + refused.what());
+    }
+  }
+
+  /// Applies `e` (the editor's requests and the Python module's calls; `e.line` numbers
+  /// it in the history).
+  /// \throws Edit_refused "verb: reason" if the edit is refused; nothing changes
+  Edit_record apply(const Script_edit& e)
   {
     typedef std::chrono::steady_clock Clock;
     if(const std::string refusal = edit_refusal(e); !refusal.empty())
-      throw Edit_script_error(internal::script_place(script.path, e.line) + refusal);
+      throw Edit_refused(refusal);
     Edit_record r;
     r.line = e.line;
     r.verb = e.verb;
@@ -130,21 +145,20 @@ public:
     }
     catch(const CGAL::Feature_segmentation::Invalid_input& error)
     {
-      throw Edit_script_error(internal::script_place(script.path, e.line) + e.verb + ": " + error.what());
+      throw Edit_refused(e.verb + ": " + error.what());
     }
     if(e.verb == "undo")
     {
       // The library records no undo step for an edit that changed nothing (an empty
       // region, a merge inside one patch): undoing such an edit changes nothing either.
       if(m_done.empty())
-        throw Edit_script_error(internal::script_place(script.path, e.line) + "undo: no edit to undo");
+        throw Edit_refused("undo: no edit to undo");
       const Done last = m_done.back();
       if(last.recorded && !m_segmentation.undo())
-        throw Edit_script_error(internal::script_place(script.path, e.line) +
-                                "undo: cannot take back line " + std::to_string(last.line) +
-                                ": the segmentation's history keeps " +
-                                std::to_string(m_segmentation.undo_memory_limit() >> 20) +
-                                " MiB of earlier states, and that edit's state was dropped");
+        throw Edit_refused("undo: cannot take back line " + std::to_string(last.line) +
+                           ": the segmentation's history keeps " +
+                           std::to_string(m_segmentation.undo_memory_limit() >> 20) +
+                           " MiB of earlier states, and that edit's state was dropped");
       m_done.pop_back();
       m_undone.push_back(last);
       r.undone_line = last.line;
@@ -152,11 +166,10 @@ public:
     else if(e.verb == "redo")
     {
       if(m_undone.empty())
-        throw Edit_script_error(internal::script_place(script.path, e.line) + "redo: no undone edit to redo");
+        throw Edit_refused("redo: no undone edit to redo");
       const Done last = m_undone.back();
       if(last.recorded && !m_segmentation.redo())
-        throw Edit_script_error(internal::script_place(script.path, e.line) + "redo: cannot make line " +
-                                std::to_string(last.line) + " again");
+        throw Edit_refused("redo: cannot make line " + std::to_string(last.line) + " again");
       m_undone.pop_back();
       m_done.push_back(last);
       r.redone_line = last.line;

@@ -50,11 +50,11 @@ namespace fs_app {
 
 /// A mistake in an edit script (or a script that cannot be read); the message is
 /// "FILE:LINE: reason" (or "FILE: reason").
-class Edit_script_error : public std::runtime_error
-{
-public:
-  explicit Edit_script_error(const std::string& what) : std::runtime_error(what) {}
-};
+class Edit_script_error : public std::runtime_error { public: using std::runtime_error::runtime_error; };
+
+/// An edit that cannot be made (a value out of range, nothing to undo, an edit the
+/// library refuses); the message is "verb: reason". Nothing changed.
+class Edit_refused : public std::runtime_error { public: using std::runtime_error::runtime_error; };
 
 /// A region of the mesh named in a script.
 struct Script_region

@@ -9,7 +9,7 @@
 
 #include "edit_runner.h"
 #include "edit_script.h"
-#include "program_options.h"
+#include "option_table.h"
 #include "read_input_mesh.h"
 #include "read_user_feature_lines.h"
 #include "run_report.h"

@@ -1,20 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The options of the program `feature_segmentation`: one struct, read once from the
-// command line by Boost.Program_options (subcommands `segment`, the default, `edit` and
-// `batch`), and the --help text.
+// The command line of the program `feature_segmentation`: the options of option_table.h,
+// read once by Boost.Program_options (subcommands `segment`, the default, `edit` and
+// `batch`).
 
 #ifndef CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_OPTIONS_H
 #define CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_OPTIONS_H
 
-#include "number_text.h"
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-
-#include <CGAL/Feature_segmentation/crest_lines.h>
-#include <CGAL/Feature_segmentation/principal_curvatures.h>
-#include <CGAL/Feature_segmentation/smooth_boundaries.h>
-#include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
+#include "option_table.h"
+#include "options.h"
 
 #include <boost/program_options/options_description.hpp>
 #include <boost/program_options/parsers.hpp>
@@ -35,87 +28,16 @@
 
 namespace fs_app {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-namespace FS = CGAL::Feature_segmentation;
-
-inline const char* const program_name = "feature_segmentation";
-
-// for --help and the summary (the program passes the option only when it is given)
-inline const int default_smoothing_iterations = FS::default_smoothing_iterations;
-
-// A wrong command line: reported with exit status 2, as getopt-style programs do.
-class Usage_error : public std::runtime_error
+// Strict number parsing: the whole argument must be the number ("1.5x", "", " 1", "abc"
+// are refused; apply_option() checks the range).
+inline long long parse_int(const std::string& option, const std::string& text)
 {
-public:
-  explicit Usage_error(const std::string& what) : std::runtime_error(what) {}
-};
-
-// The subcommand: `segment` (the default) writes the outputs; `edit` serves the editor;
-// `batch` segments many meshes.
-enum class Command { SEGMENT, EDIT, BATCH };
-
-struct Options
-{
-  Command command = Command::SEGMENT;
-  // edit: the address and port the editor's server listens on (0: a free port), and the
-  // folder of its web page (empty: the one built next to the program).
-  std::string host = "127.0.0.1";
-  int port = 8080;
-  std::string web_root;
-  bool no_token = false; ///< edit: serve the API without the session token (scripted local use)
-  // batch: the meshes, folders of meshes and list files given; the meshes segmented at
-  // once; whether meshes with complete outputs are done again.
-  std::vector<std::string> inputs;
-  int jobs = 1;
-  // threads of the parallel stages (0: all cores)
-  int threads = 0;
-  bool force = false;
-  std::string input = std::string(FS_MESH_DIR) + "/fandisk.off";
-  std::string output_dir = "feature_segmentation_output";
-  int rings = 2;
-  double radius = FS::default_neighborhood_radius;
-  std::optional<double> strength_threshold; // unset: the library's default
-  bool ridges = true;
-  bool valleys = true;
-  std::string feature_edges_file;           // empty: none
-  // The library's defaults (defaults.h)
-  double alpha = CGAL::Feature_segmentation::default_alpha;
-  double gamma = CGAL::Feature_segmentation::default_gamma;
-  double crease_angle = CGAL::Feature_segmentation::default_crease_angle;
-  // most rounds of normal filtering before creases
-  int crease_filter = CGAL::Feature_segmentation::default_crease_filter_iterations;
-  // clean tessellations of CAD parts: crest lines at the full alpha, and cuts along
-  // curvature discontinuities
-  bool crest_lines_on_clean_tessellations = CGAL::Feature_segmentation::default_crest_lines_on_clean_tessellations;
-  bool tangent_discontinuities = CGAL::Feature_segmentation::default_tangent_discontinuities;
-  std::string solver = "gaec+klj";
-  bool full_graph = false;
-  std::string watershed = "anisotropic";
-  std::string edits_file;                   // empty: no edits
-  // the memory the editing history may keep, MiB (Feature_aligned_segmentation's default)
-  std::size_t undo_memory_mib = std::size_t(256);
-  std::optional<int> smoothing_iterations;  // unset: the library's default
-  bool quiet = false;
-  bool help = false;     ///< --help: the short usage
-  bool help_all = false; ///< --help-all: every option in full, the outputs, the edit scripts
-};
-
-
-inline void require(bool ok, const std::string& message) { if(!ok) throw Usage_error(message); }
-
-// Strict number parsing: the whole argument must be the number ("1.5x", "", " 1", "abc",
-// "nan" and out-of-range values are refused).
-inline int parse_int(const std::string& option, const std::string& text)
-{
-  std::size_t used = 0; // stays 0 if stol throws
-  long value = 0;
-  try { value = std::stol(text, &used, 10); } catch(const std::exception&) {}
+  std::size_t used = 0; // stays 0 if stoll throws
+  long long value = 0;
+  try { value = std::stoll(text, &used, 10); } catch(const std::exception&) {}
   require(used != 0 && used == text.size() && !std::isspace(static_cast<unsigned char>(text[0])),
           option + " expects an integer (got '" + text + "')");
-  require(value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max(),
-          option + " is out of range (got '" + text + "')");
-  return static_cast<int>(value);
+  return value;
 }
 
 inline double parse_double(const std::string& option, const std::string& text)
@@ -125,7 +47,6 @@ inline double parse_double(const std::string& option, const std::string& text)
   try { value = std::stod(text, &used); } catch(const std::exception&) {}
   require(used != 0 && used == text.size() && !std::isspace(static_cast<unsigned char>(text[0])),
           option + " expects a number (got '" + text + "')");
-  require(std::isfinite(value), option + " expects a finite number (got '" + text + "')");
   return value;
 }
 
@@ -162,12 +83,6 @@ private:
 inline Option_value* flag_option(std::function<void()> f) { return new Option_value(0, [f](const std::string&) { f(); }); }
 inline Option_value* value_option(std::function<void(const std::string&)> f) { return new Option_value(1, std::move(f)); }
 
-// A value that may be anything but empty.
-inline Option_value* text_option(std::string& field, const std::string& if_empty)
-{
-  return value_option([&field, if_empty](const std::string& t) { require(!t.empty(), if_empty); field = t; });
-}
-
 // Two tokens read as before, not as Boost would: "--solver=" is an empty value, which the
 // option's own check names ("--solver must be ...", "--rings expects an integer (got
 // '')"), and "--" an unknown option, not the end of the options.
@@ -187,12 +102,14 @@ inline std::vector<po::option> parse_as_before(std::vector<std::string>& args)
 // The options of one subcommand are refused by the others, not ignored.
 inline void check_scope(const std::string& flag, Command command)
 {
-  if(command != Command::EDIT && (flag == "--port" || flag == "--host" || flag == "--web-root" || flag == "--no-token"))
-    throw Usage_error(flag + " is an option of 'edit' (" + program_name + " edit MESH " + flag + " ...)");
-  if(command != Command::BATCH && flag == "--jobs")
-    throw Usage_error("--jobs is an option of 'batch' (" + std::string(program_name) + " batch INPUTS --jobs N)");
-  if(command != Command::BATCH && flag == "--force")
-    throw Usage_error("--force is an option of 'batch'");
+  for(const Option_entry& e : option_table())
+    if(e.flag() == flag && e.only && *e.only != command)
+    {
+      const bool edit = *e.only == Command::EDIT;
+      throw Usage_error(flag + " is an option of '" + (edit ? "edit" : "batch") + "' (" + program_name +
+                        (edit ? " edit MESH " : " batch INPUTS ") + flag + (e.metavar.empty() ? "" : " " + e.metavar) +
+                        ")");
+    }
 }
 
 // A first argument that is a word (letters, '-' and '_' inside, no '.', no '/') and no
@@ -221,65 +138,30 @@ inline Options parse_command_line(int argc, char** argv)
   typedef const std::string& Text;
 
   po::options_description described;
+  for(const Option_entry& e : option_table())
+  {
+    const std::string flag = e.flag();
+    const std::string name = flag.substr(2) + (e.keyword == "help" ? ",h" : "");
+    if(e.kind == Option_kind::SWITCH)
+    {
+      described.add_options()(name.c_str(), flag_option([&o, &e, flag] {
+                                 Option_input in;
+                                 in.name = flag;
+                                 in.on = !e.negated;
+                                 apply_option(e, o, in);
+                               }));
+      continue;
+    }
+    described.add_options()(name.c_str(), value_option([&o, &e, flag](Text t) {
+                               Option_input in;
+                               in.name = flag;
+                               in.got = in.text = t;
+                               if(e.kind == Option_kind::INTEGER) in.integer = parse_int(flag, t);
+                               if(e.kind == Option_kind::NUMBER) in.number = parse_double(flag, t);
+                               apply_option(e, o, in);
+                             }));
+  }
   described.add_options()
-    ("help,h", flag_option([&] { o.help = true; }))
-    ("help-all", flag_option([&] { o.help = o.help_all = true; }))
-    ("quiet", flag_option([&] { o.quiet = true; }))
-    ("no-ridges", flag_option([&] { o.ridges = false; }))
-    ("no-valleys", flag_option([&] { o.valleys = false; }))
-    ("full-graph", flag_option([&] { o.full_graph = true; }))
-    ("crest-lines-on-clean-tessellations", flag_option([&] { o.crest_lines_on_clean_tessellations = true; }))
-    ("no-tangent-discontinuities", flag_option([&] { o.tangent_discontinuities = false; }))
-    ("force", flag_option([&] { o.force = true; }))
-    ("no-token", flag_option([&] { o.no_token = true; }))
-    ("output-dir", text_option(o.output_dir, "--output-dir expects a non-empty folder name"))
-    ("rings", value_option([&](Text t) {
-       o.rings = parse_int("--rings", t);
-       require(o.rings >= 1, "--rings must be an integer >= 1 (got " + std::to_string(o.rings) + ")"); }))
-    ("radius", value_option([&](Text t) {
-       o.radius = parse_double("--radius", t);
-       require(o.radius >= 0 && o.radius <= 1, "--radius must be a number in [0, 1] (got " + t + ")"); }))
-    ("strength-threshold", value_option([&](Text t) {
-       o.strength_threshold = parse_double("--strength-threshold", t);
-       require(*o.strength_threshold >= 0, "--strength-threshold must be >= 0 (got '" + t + "')"); }))
-    ("feature-edges", text_option(o.feature_edges_file, "--feature-edges expects a file name"))
-    ("alpha", value_option([&](Text t) { o.alpha = parse_double("--alpha", t); }))
-    ("gamma", value_option([&](Text t) {
-       o.gamma = parse_double("--gamma", t);
-       require(o.gamma >= 0, "--gamma must be >= 0 (got '" + t + "')"); }))
-    ("crease-angle", value_option([&](Text t) {
-       o.crease_angle = parse_double("--crease-angle", t);
-       require(o.crease_angle > 0, "--crease-angle must be > 0 degrees (got '" + t + "')"); }))
-    ("crease-filter", value_option([&](Text t) {
-       o.crease_filter = parse_int("--crease-filter", t);
-       require(o.crease_filter >= 0 && o.crease_filter <= 1000,
-               "--crease-filter must be an integer in 0 .. 1000 (got '" + t + "')"); }))
-    ("solver", value_option([&](Text t) {
-       require(t == "gaec+klj" || t == "gaec" || t == "klj", "--solver must be gaec+klj, gaec or klj (got '" + t + "')");
-       o.solver = t; }))
-    ("watershed", value_option([&](Text t) {
-       require(t == "anisotropic" || t == "geodesic", "--watershed must be anisotropic or geodesic (got '" + t + "')");
-       o.watershed = t; }))
-    ("edits", text_option(o.edits_file, "--edits expects a file name"))
-    ("undo-memory", value_option([&](Text t) {
-       const int mib = parse_int("--undo-memory", t);
-       require(mib >= 0 && mib <= 1 << 20, "--undo-memory must be an integer of MiB in 0 .. 1048576 (got " + t + ")");
-       o.undo_memory_mib = std::size_t(mib); }))
-    ("smoothing-iterations", value_option([&](Text t) {
-       const int n = parse_int("--smoothing-iterations", t);
-       require(n >= 0, "--smoothing-iterations must be an integer >= 0 (got " + std::to_string(n) + ")");
-       o.smoothing_iterations = n; }))
-    ("port", value_option([&](Text t) {
-       o.port = parse_int("--port", t);
-       require(o.port >= 0 && o.port <= 65535, "--port must be an integer in 0 .. 65535 (got " + t + ")"); }))
-    ("host", text_option(o.host, "--host expects a non-empty value"))
-    ("web-root", text_option(o.web_root, "--web-root expects a non-empty value"))
-    ("threads", value_option([&](Text t) {
-       o.threads = parse_int("--threads", t);
-       require(o.threads >= 0 && o.threads <= 1024, "--threads must be an integer in 0 .. 1024 (got " + t + ")"); }))
-    ("jobs", value_option([&](Text t) {
-       o.jobs = parse_int("--jobs", t);
-       require(o.jobs >= 1 && o.jobs <= 1024, "--jobs must be an integer in 1 .. 1024 (got " + t + ")"); }))
     ("input", value_option([&](Text t) { // the positional arguments: the mesh, or batch's inputs
        require(batch || !has_input, "more than one input mesh ('" + o.input + "' and '" + t + "')");
        if(batch) o.inputs.push_back(t);
@@ -343,28 +225,6 @@ inline Options parse_command_line(int argc, char** argv)
   if(o.full_graph && given.count("watershed") && !o.quiet && !o.help)
     std::cerr << "notice: --full-graph: no oversegmentation, --watershed has no effect\n";
   return o;
-}
-
-/// The options that decide the segmentation, as command-line flags (" --alpha 0.6 ..."),
-/// every one explicit, numbers in the shortest form that reads back exactly: what a
-/// replay of an editor session (`--edits edits.txt`) must be given.
-inline std::string segmentation_options_text(const Options& o)
-{
-  const auto number = number_text;
-  std::string t = " --rings " + std::to_string(o.rings) + " --radius " + number(o.radius) +
-                  " --strength-threshold " +
-                  number(o.strength_threshold ? *o.strength_threshold : FS::default_strength_threshold) +
-                  " --alpha " + number(o.alpha) + " --gamma " + number(o.gamma) + " --crease-angle " +
-                  number(o.crease_angle) + " --crease-filter " + std::to_string(o.crease_filter) + " --solver " +
-                  o.solver + " --watershed " + o.watershed;
-  if(o.full_graph) t += " --full-graph";
-  if(!o.ridges) t += " --no-ridges";
-  if(!o.valleys) t += " --no-valleys";
-  if(o.crest_lines_on_clean_tessellations) t += " --crest-lines-on-clean-tessellations";
-  if(!o.tangent_discontinuities) t += " --no-tangent-discontinuities";
-  if(!o.feature_edges_file.empty()) t += " --feature-edges " + o.feature_edges_file;
-  if(o.smoothing_iterations) t += " --smoothing-iterations " + std::to_string(*o.smoothing_iterations);
-  return t;
 }
 
 } // namespace fs_app

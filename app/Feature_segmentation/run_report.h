@@ -8,7 +8,7 @@
 
 #include "edit_runner.h"
 #include "peak_memory.h"
-#include "program_options.h"
+#include "option_table.h"
 #include "read_input_mesh.h"
 
 #include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
@@ -157,6 +157,25 @@ struct Results
   std::size_t number_of_split_faces = 0;
 };
 
+/// The options of the run, as summary.json records them: the segmentation's options of
+/// option_table.h, the edit script and the threads, by keyword (a library default where
+/// the option was not given; null for no file).
+inline nlohmann::ordered_json options_json(const Options& options)
+{
+  typedef nlohmann::ordered_json Json;
+  Json j = Json::object();
+  for(const Option_entry& e : option_table())
+  {
+    if(!e.segmentation && e.keyword != "edits" && e.keyword != "threads") continue;
+    const std::string v = e.value(options).empty() ? e.shown_default : e.value(options);
+    if(e.kind == Option_kind::SWITCH) j[e.keyword] = v == "true";
+    else if(e.kind == Option_kind::INTEGER) j[e.keyword] = std::stoll(v);
+    else if(e.kind == Option_kind::NUMBER) j[e.keyword] = std::stod(v);
+    else j[e.keyword] = v.empty() ? Json(nullptr) : Json(v);
+  }
+  return j;
+}
+
 // `peak_mib`: the peak resident memory of each stage (the write's without this summary,
 // written last), "peak_memory_mib" in the summary.
 inline void write_summary(std::ostream& os, const Options& options, const Results& r,
@@ -164,7 +183,6 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
                           const std::vector<std::pair<std::string, double> >& peak_mib = {})
 {
   typedef nlohmann::ordered_json Json;
-  auto text_or_null = [](const std::string& s) { return s.empty() ? Json(nullptr) : Json(s); };
   Json edits = Json::array();
   for(const Edit_record& e : r.edits)
   {
@@ -192,25 +210,7 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
   const Json summary{
     {"program", program_name},
     {"input", options.input},
-    {"options",
-     {{"rings", options.rings},
-      {"radius", options.radius},
-      {"strength_threshold", options.strength_threshold ? *options.strength_threshold : FS::default_strength_threshold},
-      {"ridges", options.ridges},
-      {"valleys", options.valleys},
-      {"feature_edges_file", text_or_null(options.feature_edges_file)},
-      {"alpha", options.alpha},
-      {"gamma", options.gamma},
-      {"crease_angle", options.crease_angle},
-      {"crease_filter", options.crease_filter},
-      {"tangent_discontinuities", options.tangent_discontinuities},
-      {"crest_lines_on_clean_tessellations", options.crest_lines_on_clean_tessellations},
-      {"full_graph", options.full_graph},
-      {"watershed", options.watershed},
-      {"edits_file", text_or_null(options.edits_file)},
-      {"smoothing_iterations", options.smoothing_iterations ? *options.smoothing_iterations : default_smoothing_iterations},
-      {"solver", options.solver},
-      {"threads", options.threads}}},
+    {"options", options_json(options)},
     {"input_file",
      {{"format", r.read_report.format},
       {"vertices", r.read_report.number_of_file_points},

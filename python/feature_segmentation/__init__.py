@@ -6,25 +6,23 @@ numpy arrays in, numpy arrays out, over the same pipeline as the program
 
     import feature_segmentation as fs
     vertices, faces = fs.read_mesh("fandisk.off")
-    face_patches, vertex_patches, result = fs.segment(vertices, faces, alpha=0.6)
+    face_patches, vertex_patches, result = fs.segment(vertices, faces, alpha=0.8)
     print(result.patches, result.cut_cost, result.seconds)
 
     seg = fs.Segmentation(vertices, faces)     # precompute once, then edit
     seg.set_alpha(1.0); seg.merge([0, 17]); seg.undo()
     seg.save("out")                            # the program's outputs and edits.txt
 
-Options (keywords; the program's ``--crease-angle`` is ``crease_angle``): alpha, gamma,
-rings, radius, strength_threshold, ridges, valleys, crease_angle, crease_filter,
-tangent_discontinuities, crest_lines_on_clean_tessellations,
-solver ('gaec+klj', 'gaec', 'klj'), full_graph, watershed ('anisotropic', 'geodesic'),
-smoothing_iterations, feature_edges (a polylines file). Bad input raises ValueError
-with the library's message. The computation releases the GIL: threads segment meshes
+Options are keywords, the program's flags by another spelling (``--crease-angle`` is
+``crease_angle``, ``--no-ridges`` is ``ridges=False``); ``options()`` lists them with
+their types, defaults and help. A value of the wrong type raises TypeError, a value
+out of range or bad input ValueError, with the program's message. The computation releases the GIL: threads segment meshes
 at once. Many files: ``python3 -m feature_segmentation.batch`` (local or Dask).
 """
-from ._core import (Result, Segmentation, read_mesh, segment_file, batch_plan, finished_row,
-                    write_batch_summary)
+from ._core import (Result, Segmentation, read_mesh, segment_file, options, check_options, batch_plan,
+                    finished_row, write_batch_summary)
 
-__all__ = ["segment", "read_mesh", "Segmentation", "Result", "segment_file"]
+__all__ = ["segment", "read_mesh", "Segmentation", "Result", "segment_file", "options", "check_options"]
 
 
 def segment(vertices, faces, **options):

@@ -14,11 +14,8 @@ finished mesh: a rerun skips every mesh whose outputs are complete (unless --for
 and the table is the same. The table, DIR/batch_summary.csv and .jsonl, is the one the
 program writes: a row per mesh in input order. Exit status 1 if any mesh failed.
 
-Program options: --alpha X, --gamma X, --rings N, --radius X, --strength-threshold X,
---crease-angle D, --crease-filter N, --solver NAME, --watershed NAME,
---smoothing-iterations N, --feature-edges FILE, and the flags --full-graph,
---no-ridges, --no-valleys, --no-tangent-discontinuities,
---crest-lines-on-clean-tessellations.
+Program options: the segmentation options of the program, by the same flags
+(``feature_segmentation.options()`` lists them; ``--help`` shows them).
 """
 import argparse
 import sys
@@ -26,8 +23,19 @@ import time
 
 from . import _core
 
-_VALUED = ["alpha", "gamma", "rings", "radius", "strength-threshold", "crease-angle", "crease-filter",
-           "solver", "watershed", "smoothing-iterations", "feature-edges"]
+_TYPES = {"int": int, "float": float, "str": str}
+
+
+def _add_program_options(parser):
+    """The program's segmentation options, from the module's one table."""
+    for keyword, o in _core.options().items():
+        if o["type"] == "bool":
+            # a switch on by default is turned off by its flag (--no-ridges), the others on
+            parser.add_argument(o["flag"], dest=keyword, action="store_const", const=not o["default"],
+                                default=None, help=o["help"])
+        else:
+            parser.add_argument(o["flag"], dest=keyword, type=_TYPES[o["type"]], metavar=o["type"].upper(),
+                                help=o["help"])
 
 
 def run_one(mesh, output, options):
@@ -109,29 +117,11 @@ def main(argv=None):
     parser.add_argument("--workers", type=int, default=2, help="worker processes of the local cluster (default: 2)")
     parser.add_argument("--force", action="store_true", help="segment again meshes whose outputs are complete")
     parser.add_argument("--quiet", action="store_true", help="no progress lines")
-    for name in _VALUED:
-        parser.add_argument("--" + name)
-    for flag in ["full-graph", "no-ridges", "no-valleys", "no-tangent-discontinuities",
-                 "crest-lines-on-clean-tessellations"]:
-        parser.add_argument("--" + flag, action="store_true")
+    _add_program_options(parser)
     a = parser.parse_args(argv)
     if a.workers < 1:
         parser.error("--workers must be >= 1")
-    options = {}
-    for name in _VALUED:
-        value = getattr(a, name.replace("-", "_"))
-        if value is not None:
-            options[name.replace("-", "_")] = value
-    if a.full_graph:
-        options["full_graph"] = True
-    if a.no_ridges:
-        options["ridges"] = False
-    if a.no_valleys:
-        options["valleys"] = False
-    if a.no_tangent_discontinuities:
-        options["tangent_discontinuities"] = False
-    if a.crest_lines_on_clean_tessellations:
-        options["crest_lines_on_clean_tessellations"] = True
+    options = {k: getattr(a, k) for k in _core.options() if getattr(a, k) is not None}
     try:
         rows = run(a.inputs, a.output_dir, options, a.scheduler, a.workers, a.force,
                    None if a.quiet else sys.stderr)

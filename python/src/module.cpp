@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Python module `feature_segmentation` (its compiled part, `_core`): numpy arrays in,
-// numpy arrays out, over the same pipeline as the program (the application layer's
-// pipeline.h, app/Feature_segmentation/): the same mesh repairs, the same options with the same checks, the same
-// edits (the edit script's Edit_runner), the same outputs. The GIL is released while the
-// pipeline runs, so threads segment meshes at once. Bad input raises ValueError with the
-// library's message.
+// numpy arrays out, over the application layer's pipeline (app/Feature_segmentation/):
+// the program's mesh repairs, options (by keyword, keywords.h), edits (typed calls on
+// the edit runner, session.h) and outputs. The GIL is released while the pipeline runs,
+// so threads segment meshes at once. A bad value raises ValueError with the program's
+// message, a value of the wrong type TypeError.
 
 #include "batch_command.h"
-#include "pipeline.h"
-#include "program_options.h"
+#include "session.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -16,339 +15,12 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <memory>
-#include <set>
-#include <regex>
 #include <string>
 #include <vector>
 
 namespace py = pybind11;
 using namespace fs_app;
-
-namespace {
-
-// Options from keyword arguments, through the program's own parser (same checks, same
-// messages, with the flags renamed as keywords: "--crease-angle" -> "crease_angle").
-Options options_from_kwargs(const py::kwargs& kwargs)
-{
-  std::vector<std::string> args{"feature_segmentation", "unused.off"};
-  for(const auto& item : kwargs)
-  {
-    std::string key = py::str(item.first);
-    const py::handle value = item.second;
-    std::string flag = "--" + std::regex_replace(key, std::regex("_"), "-");
-    if(key == "ridges" || key == "valleys" || key == "tangent_discontinuities" || key == "full_graph" ||
-       key == "crest_lines_on_clean_tessellations")
-    {
-      if(!py::isinstance<py::bool_>(value)) throw py::type_error(key + " must be a bool");
-      const bool on = value.cast<bool>();
-      if(key == "full_graph" || key == "crest_lines_on_clean_tessellations") { if(on) args.push_back(flag); }
-      else if(!on) args.push_back("--no-" + std::regex_replace(key, std::regex("_"), "-"));
-      continue;
-    }
-    static const std::set<std::string> known{"alpha", "gamma", "rings", "radius", "strength_threshold",
-                                             "crease_angle", "crease_filter", "solver", "watershed",
-                                             "smoothing_iterations", "feature_edges"};
-    if(!known.count(key))
-      throw py::type_error("unexpected keyword argument '" + key + "'");
-    if(value.is_none()) continue; // the default
-    if(py::isinstance<py::bool_>(value)) throw py::type_error(key + " must be a number or a string, not a bool");
-    args.push_back(flag);
-    args.push_back(py::str(value));
-  }
-  args.push_back("--quiet");
-  std::vector<char*> argv;
-  for(std::string& a : args) argv.push_back(a.data());
-  try
-  {
-    Options o = parse_command_line(int(argv.size()), argv.data());
-    o.input.clear();
-    return o;
-  }
-  catch(const Usage_error& e)
-  {
-    std::string what = e.what();
-    what = std::regex_replace(what, std::regex("unknown option '--([a-z-]+)' \\(see --help\\)"),
-                              "unexpected keyword argument '$1'");
-    what = std::regex_replace(what, std::regex("--no-([a-z]+)"), "$1");
-    std::smatch m;
-    std::string out;
-    // --crease-angle -> crease_angle
-    std::string rest = what;
-    const std::regex flag_re("--([a-z]+(-[a-z]+)*)");
-    while(std::regex_search(rest, m, flag_re))
-    {
-      out += m.prefix().str() + std::regex_replace(m[1].str(), std::regex("-"), "_");
-      rest = m.suffix().str();
-    }
-    throw py::value_error(out + rest);
-  }
-}
-
-// `x` through numpy.asarray, as numpy functions take their inputs (a list of lists is
-// an array); what numpy cannot make an array of is a short ValueError naming `what`.
-py::array as_array(const py::object& x, const char* what)
-{
-  try
-  {
-    return py::module_::import("numpy").attr("asarray")(x);
-  }
-  catch(const py::error_already_set&)
-  {
-    throw py::value_error(std::string(what) + " must be an array or a nested sequence of numbers (got " +
-                          std::string(py::str(py::type::of(x).attr("__name__"))) + ")");
-  }
-}
-
-// The (n, 3) and (m, 3) arrays as a polygon soup: the one copy in.
-Mesh_soup soup_from_arrays(const py::object& vertices_in, const py::object& faces_in)
-{
-  const py::array vertices = as_array(vertices_in, "vertices");
-  const py::array faces = as_array(faces_in, "faces");
-  if(vertices.ndim() != 2 || vertices.shape(1) != 3)
-    throw py::value_error("vertices must be an (n, 3) array of coordinates");
-  if(faces.ndim() != 2 || faces.shape(1) != 3)
-    throw py::value_error("faces must be an (m, 3) array of vertex indices");
-  if(!py::isinstance<py::array_t<double> >(vertices) && !py::isinstance<py::array_t<float> >(vertices) &&
-     vertices.dtype().kind() != 'i' && vertices.dtype().kind() != 'u')
-    throw py::value_error("vertices must hold numbers (got dtype " + std::string(py::str(vertices.dtype())) + ")");
-  if(faces.dtype().kind() != 'i' && faces.dtype().kind() != 'u')
-    throw py::value_error("faces must hold integers (got dtype " + std::string(py::str(faces.dtype())) + ")");
-  const auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(vertices);
-  const auto f = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(faces);
-  Mesh_soup soup;
-  soup.format = "arrays";
-  const std::size_t n = std::size_t(v.shape(0)), m = std::size_t(f.shape(0));
-  soup.points.resize(n);
-  const double* pv = v.data();
-  for(std::size_t i = 0; i < n; ++i)
-    for(int k = 0; k < 3; ++k)
-    {
-      if(!std::isfinite(pv[3 * i + k]))
-        throw py::value_error("vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
-      soup.points[i][k] = pv[3 * i + k];
-    }
-  const std::int64_t* pf = f.data();
-  soup.indices.resize(3 * m);
-  soup.begin.resize(m + 1);
-  for(std::size_t i = 0; i < 3 * m; ++i)
-  {
-    if(pf[i] < 0 || std::size_t(pf[i]) >= n)
-      throw py::value_error("face " + std::to_string(i / 3) + " refers to vertex " + std::to_string(pf[i]) +
-                            ", out of range (there are " + std::to_string(n) + " vertices)");
-    soup.indices[i] = std::uint32_t(pf[i]);
-  }
-  for(std::size_t i = 0; i <= m; ++i) soup.begin[i] = std::uint32_t(3 * i);
-  return soup;
-}
-
-py::array_t<std::int64_t> to_array(const std::vector<long>& v)
-{
-  py::array_t<std::int64_t> a(py::ssize_t(v.size()));
-  std::copy(v.begin(), v.end(), a.mutable_data());
-  return a;
-}
-
-/// What a segmentation measured (the Python `Result`).
-struct Result
-{
-  std::size_t patches = 0, faces = 0, vertices = 0, feature_edges = 0, crease_edges = 0;
-  double cut_cost = 0;
-  std::map<std::string, double> seconds;
-};
-
-// A Pipeline on arrays, with its options, timer and results: one segmentation.
-class Session
-{
-public:
-  Session(const py::object& vertices, const py::object& faces, const py::kwargs& kwargs)
-    : m_options(options_from_kwargs(kwargs)), m_timer(true), m_pipeline(m_options, m_timer, m_results)
-  {
-    Mesh_soup soup = soup_from_arrays(vertices, faces);
-    py::gil_scoped_release release;
-    run_translated([&] {
-      m_pipeline.load(soup, "the arrays");
-      m_pipeline.segment();
-    });
-  }
-
-  Result result() const
-  {
-    const auto& seg = *m_pipeline.segmentation;
-    Result r;
-    r.patches = seg.number_of_patches();
-    r.cut_cost = seg.cut_cost();
-    r.faces = num_faces(m_pipeline.mesh);
-    r.vertices = num_vertices(m_pipeline.mesh);
-    r.feature_edges = seg.number_of_feature_edges();
-    r.crease_edges = seg.number_of_crease_edges();
-    for(const auto& s : m_timer.seconds()) r.seconds[s.first] = s.second;
-    return r;
-  }
-
-  // Per face of the input arrays, in their order, and per vertex (-1: a vertex no face
-  // uses): the patches of the smoothed boundaries, as the program's face_patches.txt and
-  // vertex_patches.txt.
-  py::array_t<std::int64_t> face_patches() const { return to_array(file_patches().faces); }
-  py::array_t<std::int64_t> vertex_patches() const { return to_array(file_patches().vertices); }
-  // Both from one smoothing of the boundaries.
-  py::tuple patch_arrays() const
-  {
-    const Pipeline::File_patches p = file_patches();
-    return py::make_tuple(to_array(p.faces), to_array(p.vertices));
-  }
-
-  Pipeline::File_patches file_patches() const
-  {
-    py::gil_scoped_release release;
-    return m_pipeline.file_patches(m_pipeline.boundaries(true));
-  }
-
-  // One edit of the edit script; faces are indices of the input arrays' faces.
-  std::size_t edit(Script_edit e)
-  {
-    const std::size_t n = m_results.read_report.number_of_file_faces;
-    for(std::size_t f : e.region.faces)
-      if(f >= n)
-        throw py::value_error(e.verb + ": face index " + std::to_string(f) + " is out of range (there are " +
-                              std::to_string(n) + " faces)");
-    e.region.kind = Script_region::FILE_FACES;
-    e.line = m_history.size() + 1;
-    Edit_script script;
-    script.path = "edit";
-    {
-      py::gil_scoped_release release;
-      try
-      {
-        m_results.edits.push_back(m_pipeline.edit_runner().apply(script, e));
-      }
-      catch(const Edit_script_error& error)
-      {
-        std::string what = error.what();
-        const std::string prefix = "edit:" + std::to_string(e.line) + ": ";
-        if(what.rfind(prefix, 0) == 0) what.erase(0, prefix.size());
-        py::gil_scoped_acquire acquire;
-        throw py::value_error(what);
-      }
-    }
-    m_history.push_back(e);
-    return m_pipeline.segmentation->number_of_patches();
-  }
-
-  std::vector<std::string> edits() const { return edit_script_lines(m_history); }
-
-  double alpha() const { return m_pipeline.segmentation->alpha(); }
-
-  py::list boundaries(bool smooth) const
-  {
-    FS::Patch_boundaries<Mesh> b = [&] {
-      py::gil_scoped_release release;
-      return m_pipeline.boundaries(smooth);
-    }();
-    py::list curves;
-    for(const auto& c : b.curves())
-    {
-      const std::vector<double> xyz = Pipeline::curve_coordinates(c);
-      py::array_t<double> a({py::ssize_t(xyz.size() / 3), py::ssize_t(3)});
-      std::copy(xyz.begin(), xyz.end(), a.mutable_data());
-      curves.append(a);
-    }
-    return curves;
-  }
-
-  py::list feature_lines() const
-  {
-    py::list lines;
-    for(const auto& line : m_pipeline.segmentation->feature_lines().lines)
-    {
-      std::vector<double> xyz = m_pipeline.line_coordinates(line);
-      if(line.is_closed && !xyz.empty()) xyz.resize(xyz.size() - 3); // the points, once each
-      py::array_t<double> a({py::ssize_t(xyz.size() / 3), py::ssize_t(3)});
-      std::copy(xyz.begin(), xyz.end(), a.mutable_data());
-      py::dict d;
-      d["kind"] = line.type == FS::Feature_line_type::RIDGE ? "ridge"
-                  : line.type == FS::Feature_line_type::VALLEY ? "valley" : "user";
-      d["points"] = a;
-      d["closed"] = line.is_closed;
-      lines.append(d);
-    }
-    return lines;
-  }
-
-  // The crease edges as a (c, 2, 3) array of segments.
-  py::array_t<double> creases() const
-  {
-    const std::vector<double> xyz = m_pipeline.crease_segments();
-    py::array_t<double> a({py::ssize_t(xyz.size() / 6), py::ssize_t(2), py::ssize_t(3)});
-    std::copy(xyz.begin(), xyz.end(), a.mutable_data());
-    return a;
-  }
-
-  void save(const std::string& dir)
-  {
-    m_options.output_dir = dir;
-    py::gil_scoped_release release;
-    run_translated([&] {
-      create_output_dir(m_options);
-      m_pipeline.write_edits_file(m_history, "feature_segmentation.Segmentation");
-      m_pipeline.write_outputs();
-    });
-  }
-
-private:
-  // Runs `f`, turning the package's exceptions into Python's (GIL released or not).
-  template <typename F>
-  static void run_translated(F&& f)
-  {
-    try
-    {
-      f();
-    }
-    catch(const Input_error& e)
-    {
-      py::gil_scoped_acquire acquire;
-      throw py::value_error(e.what());
-    }
-    catch(const FS::Invalid_input& e)
-    {
-      py::gil_scoped_acquire acquire;
-      throw py::value_error(e.what());
-    }
-  }
-
-  Options m_options;
-  Stage_timer m_timer;
-  Results m_results;
-  Pipeline m_pipeline;
-  std::vector<Script_edit> m_history;
-};
-
-std::vector<std::size_t> face_list(const py::handle& faces)
-{
-  const auto a = py::array::ensure(faces);
-  if(!a || a.ndim() != 1 || (a.dtype().kind() != 'i' && a.dtype().kind() != 'u'))
-    throw py::value_error("faces must be a 1-D array (or list) of face indices");
-  const auto f = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
-  std::vector<std::size_t> out;
-  for(py::ssize_t i = 0; i < f.shape(0); ++i)
-  {
-    if(f.data()[i] < 0) throw py::value_error("face indices must be >= 0");
-    out.push_back(std::size_t(f.data()[i]));
-  }
-  if(out.empty()) throw py::value_error("faces is empty");
-  return out;
-}
-
-Script_edit region_edit(const std::string& verb, const py::handle& faces, double value)
-{
-  Script_edit e;
-  e.verb = verb;
-  e.region.faces = face_list(faces);
-  e.value = value;
-  return e;
-}
-
-} // namespace
+using namespace fs_python;
 
 PYBIND11_MODULE(_core, m)
 {
@@ -410,16 +82,8 @@ face_patches(), follow the rows of `faces`.)doc")
            return s.edit(e);
          }, py::arg("points"), py::arg("alpha") = default_sketch_alpha,
          "a feature curve through `points` (moved to the surface); returns the number of patches")
-    .def("undo", [](Session& s) {
-           Script_edit e; e.verb = "undo";
-           try { s.edit(e); } catch(const py::value_error&) { return false; }
-           return true;
-         }, "take back the last edit; False if there is none")
-    .def("redo", [](Session& s) {
-           Script_edit e; e.verb = "redo";
-           try { s.edit(e); } catch(const py::value_error&) { return false; }
-           return true;
-         }, "make the last undone edit again; False if there is none")
+    .def("undo", &Session::undo, "take back the last edit; False if there is none")
+    .def("redo", &Session::redo, "make the last undone edit again; False if there is none")
     .def("boundaries", &Session::boundaries, py::arg("smooth") = true,
          "the patch boundaries: a list of (k, 3) arrays (closed curves repeat their first point)")
     .def("feature_lines", &Session::feature_lines,
@@ -443,6 +107,9 @@ face_patches(), follow the rows of `faces`.)doc")
         "(faces, patches, cut_cost); raises on failure");
   m.def("check_options", [](const py::kwargs& kwargs) { options_from_kwargs(kwargs); },
         "raises ValueError (or TypeError) if the options are not valid");
+  m.def("options", &option_descriptions,
+        "the segmentation options: {keyword: {'type', 'default', 'help', 'flag'}} (default None: the library "
+        "chooses; 'flag' is the program's command-line flag)");
   m.def("batch_plan", [](const std::vector<std::string>& inputs, const std::string& output_dir) {
           const std::vector<std::string> meshes = internal::batch_meshes(inputs);
           const std::vector<std::string> folders = internal::batch_folders(meshes);

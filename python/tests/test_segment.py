@@ -89,6 +89,49 @@ def test_bad_options_raise(fandisk):
         fs.segment(*fandisk, alpah=0.7)
 
 
+@pytest.mark.parametrize("options, error, message", [
+    (dict(rings=2.0), TypeError, "^rings must be an integer \\(got float\\)$"),
+    (dict(rings=True), TypeError, "^rings must be an integer \\(got bool\\)$"),
+    (dict(alpha="1"), TypeError, "^alpha must be a number \\(got str\\)$"),
+    (dict(ridges=1), TypeError, "^ridges must be a bool \\(got int\\)$"),
+    (dict(feature_edges=3), TypeError, "^feature_edges must be a str \\(got int\\)$"),
+    (dict(threads=2), TypeError, "^unexpected keyword argument 'threads'$"),
+    (dict(rings=0), ValueError, "^rings must be an integer >= 1 \\(got 0\\)$"),
+    (dict(rings=10**30), ValueError, "^rings is out of range"),
+    (dict(crease_angle=0), ValueError, "^crease_angle must be > 0 degrees \\(got '0'\\)$"),
+    (dict(crease_filter=1001), ValueError, "^crease_filter must be an integer in 0 .. 1000"),
+])
+def test_options_are_typed_and_checked_as_the_program_checks_them(options, error, message):
+    """A keyword is the program's option: the same check and message, named as the keyword;
+    a value of the wrong type is a TypeError (no text is parsed)."""
+    with pytest.raises(error, match=message):
+        fs.check_options(**options)
+
+
+def test_options_lists_the_program_flags_with_their_defaults():
+    options = fs.options()
+    assert options["alpha"] == {"type": "float", "default": 0.6, "flag": "--alpha",
+                                "help": "how strongly features cut: larger, more patches"}
+    assert options["ridges"]["flag"] == "--no-ridges" and options["ridges"]["default"] is True
+    assert options["full_graph"]["flag"] == "--full-graph" and options["full_graph"]["default"] is False
+    assert options["feature_edges"]["default"] is None
+    usage = subprocess.run([PROGRAM, "--help"], capture_output=True, text=True, check=True).stdout
+    for keyword, o in options.items():
+        assert o["flag"] in usage, keyword
+        assert o["flag"].replace("--no-", "--").lstrip("-").replace("-", "_") == keyword
+    # every default is accepted, and None keeps the default
+    fs.check_options(**{k: o["default"] for k, o in options.items()})
+
+
+def test_numpy_scalars_and_paths_are_accepted(fandisk, tmp_path):
+    a, _, r = fs.segment(*fandisk, alpha=np.float32(0.75), rings=np.int64(2))
+    b, _, s = fs.segment(*fandisk, alpha=0.75, rings=2)
+    assert np.array_equal(a, b) and r.cut_cost == s.cut_cost
+    # a pathlib.Path is a file name: this one is read, and is missing
+    with pytest.raises(ValueError, match="none.txt: no such file"):
+        fs.segment(*fandisk, feature_edges=tmp_path / "none.txt")
+
+
 def test_a_mesh_the_library_refuses_raises_value_error():
     # two triangles folded onto each other across their edge
     v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0.5, 2, 0]], dtype=float)

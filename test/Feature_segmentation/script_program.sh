@@ -377,7 +377,7 @@ PY
 check "--edits: the five edits recorded in order (alpha refine merge undo sketch)" \
   [ "$(python3 -c 'import json, sys; print(" ".join("%d %s" % (e["line"], e["verb"]) for e in json.load(open(sys.argv[1]))["edits"]))' "$es")" = \
     "3 alpha 4 refine 5 merge 6 undo 7 sketch" ]
-check "--edits: edits_file recorded in summary" [ "$(json_get "$es" options edits_file)" = "$work/edits.txt" ]
+check "--edits: the edit script recorded in the summary's options" [ "$(json_get "$es" options edits)" = "$work/edits.txt" ]
 check "--edits: seconds.edits in summary" [ -n "$(json_get "$es" seconds edits)" ]
 check "--edits: every edit has its seconds" \
   [ "$(python3 -c 'import json, sys; print(sum(isinstance(e.get("seconds"), float) for e in json.load(open(sys.argv[1]))["edits"]))' "$es")" -eq 5 ]

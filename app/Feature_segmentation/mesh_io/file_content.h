@@ -33,11 +33,7 @@
 namespace fs_app {
 
 /// Bad input: `what()` is one line, "<file>: <reason>" or "<file>:<line>: <reason>".
-class Input_error : public std::runtime_error
-{
-public:
-  explicit Input_error(const std::string& what) : std::runtime_error(what) {}
-};
+class Input_error : public std::runtime_error { public: using std::runtime_error::runtime_error; };
 
 namespace internal {
 

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The --help and --help-all texts of the program `feature_segmentation`.
 
-#ifndef CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_USAGE_H
-#define CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_USAGE_H
+#ifndef CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_USAGE_H
+#define CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_USAGE_H
 
 #include "program_options.h"
 
 #include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace fs_app {
 
@@ -19,10 +22,9 @@ inline void print_usage_lines(std::ostream& os)
      << "\n";
 }
 
-// --help: the usage and the options, one line each, to fit a screen.
+// --help: the usage and the options of option_table.h, one line each, to fit a screen.
 inline void print_short_usage(std::ostream& os)
 {
-  const CGAL::Feature_segmentation::internal::Segmentation_options library;
   print_usage_lines(os);
   os << "Segments a triangle mesh (.off, .obj, .ply, .stl; default: fandisk) into patches\n"
      << "bounded by its creases, ridges and valleys, and writes into DIR: segmentation.ply\n"
@@ -30,39 +32,40 @@ inline void print_short_usage(std::ostream& os)
      << "file's order), feature_lines.* and boundaries.* (typed polylines), summary.json.\n"
      << "edit serves the interactive editor on http://127.0.0.1:8080/; batch runs many meshes.\n"
      << "\n"
-     << "Options:\n"
-     << "  --output-dir DIR          output folder (default: ./" << Options().output_dir << ")\n"
-     << "  --alpha X                 how strongly features cut: larger, more patches (default: "
-     << Options().alpha << ")\n"
-     << "  --crease-angle D          creases: edges whose faces bend by D degrees or more;\n"
-     << "                            180: none, the paper's method (default: " << library.crease_angle << ")\n"
-     << "  --edits FILE              apply an edit script after the segmentation\n"
-     << "  --threads N               threads, 0: all cores (default: 0)\n"
-     << "  --quiet                   no progress or notice lines on stderr\n"
-     << "  --rings N                 curvature fit over N rings (default: 2)\n"
-     << "  --radius X                ... and X times the diagonal (default: "
-     << CGAL::Feature_segmentation::default_neighborhood_radius << ")\n"
-     << "  --strength-threshold X    drop crest lines weaker than X (default: "
-     << CGAL::Feature_segmentation::default_strength_threshold << ")\n"
-     << "  --no-ridges, --no-valleys do not detect ridges, valleys\n"
-     << "  --feature-edges FILE      the user's feature lines (CGAL polylines along mesh edges)\n"
-     << "  --gamma X                 anisotropy of the metric, >= 0 (default: " << Options().gamma << ")\n"
-     << "  --crease-filter N         normal filtering rounds on rough meshes (default: "
-     << library.crease_filter_iterations << ")\n"
-     << "  --crest-lines-on-clean-tessellations   crest lines at the full alpha on CAD meshes\n"
-     << "  --no-tangent-discontinuities           no seams where a fillet meets a plane\n"
-     << "  --solver NAME             gaec+klj, gaec or klj (default: gaec+klj)\n"
-     << "  --full-graph              solve on every vertex, not the oversegmentation\n"
-     << "  --watershed NAME          anisotropic or geodesic (default: anisotropic)\n"
-     << "  --smoothing-iterations N  boundary smoothing, 0: none (default: " << default_smoothing_iterations << ")\n"
-     << "  --undo-memory MIB         memory kept for undo (default: " << Options().undo_memory_mib << ")\n"
-     << "  --port N, --host H        edit: where to listen (default: 8080, 127.0.0.1)\n"
-     << "  --web-root DIR            edit: the editor's page (default: the installed one)\n"
-     << "  --no-token                edit: no session token on the API (scripted local use)\n"
-     << "  --jobs N, --force         batch: meshes at once (default: 1); redo complete ones\n"
-     << "  --help                    this text\n"
-     << "  --help-all                every option in full, the output files, the patch\n"
-     << "                            numbering and the edit scripts\n";
+     << "Options:\n";
+  const Options defaults;
+  for(const Option_entry& e : option_table())
+  {
+    std::string left = "  " + e.flag() + (e.metavar.empty() ? "" : " " + e.metavar);
+    // the words of the help; the default is one word, kept on one line
+    std::vector<std::string> words;
+    std::istringstream help((e.only ? std::string(*e.only == Command::EDIT ? "edit: " : "batch: ") : "") + e.help);
+    for(std::string w; help >> w;) words.push_back(w);
+    const std::string shown = e.shown_default.empty() ? e.value(defaults) : e.shown_default;
+    if(e.kind != Option_kind::SWITCH && !shown.empty())
+      words.push_back("(default: " + shown + ")");
+    // at column 28, on the next line after a long flag, in lines of 80 columns
+    if(left.size() >= 28) left += "\n" + std::string(28, ' ');
+    else left.resize(28, ' ');
+    os << left;
+    std::size_t column = 28;
+    for(const std::string& w : words)
+    {
+      if(column > 28 && column + 1 + w.size() > 80)
+      {
+        os << "\n" << std::string(28, ' ');
+        column = 28;
+      }
+      else if(column > 28)
+      {
+        os << ' ';
+        ++column;
+      }
+      os << w;
+      column += w.size();
+    }
+    os << "\n";
+  }
 }
 
 // --help-all: everything.
@@ -230,4 +233,4 @@ inline void print_usage(std::ostream& os)
 
 } // namespace fs_app
 
-#endif // CGAL_FEATURE_SEGMENTATION_DEMO_PROGRAM_USAGE_H
+#endif // CGAL_FEATURE_SEGMENTATION_APP_PROGRAM_USAGE_H
