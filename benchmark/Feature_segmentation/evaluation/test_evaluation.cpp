@@ -6,7 +6,7 @@
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
 
 #include "abc_ground_truth.h"
-#include "cad_parts.h"
+#include "resolution_series.h"
 #include "methods.h"
 #include "metrics.h"
 #include "test_meshes.h"

@@ -1,0 +1,231 @@
+// The rules of the crease cut: when normals are filtered and how far, the crease angle's
+// checks, long thin parts, the weight of crest lines on CAD parts, and faces that the
+// creases isolate. Exact answers on boxes and rods whose faces are known.
+#include <boost/test/unit_test.hpp>
+
+#include "crease_meshes.h"
+
+namespace FS = CGAL::Feature_segmentation;
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Surface_mesh<Epick::Point_3> SM;
+typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(crease_rules)
+
+BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)
+{
+  // every face of a clean box has a neighbour with its own normal: the roughness is 0,
+  // no round of filtering runs, and the creases are those of the raw angles
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(1., 2., 0.1, 5, side));
+  FS::Feature_aligned_segmentation<SM> raw(m, FS::parameters::crease_angle(20.).crease_filter_iterations(0));
+  FS::Feature_aligned_segmentation<SM> filtered(m, FS::parameters::crease_angle(20.));
+  BOOST_TEST(raw.number_of_crease_edges() == 60u);
+  BOOST_TEST(filtered.number_of_crease_edges() == 60u);
+  for(auto e : edges(m)) BOOST_TEST(raw.is_crease_edge(e) == filtered.is_crease_edge(e));
+}
+
+// The filter with a stop measures the roughness inside its rounds (one pass over the
+// pairs); the result must be that of running exactly the rounds after which the
+// roughness, measured on its own, first falls to the stop.
+BOOST_AUTO_TEST_CASE(filter_stops_after_the_round_that_makes_the_normals_smooth)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(fs_test::noisy_box(0.004, 16, side));
+  FS::internal::Mesh_indexing<SM> idx(m);
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area;
+  FS::internal::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
+  std::vector<std::uint32_t> begin, ring;
+  FS::internal::vertex_adjacent_faces(idx, begin, ring);
+  const double r0 = FS::internal::normal_roughness(normal, begin, ring);
+  const double stop = 0.1 * r0;
+  // the rounds needed, one at a time, measured by normal_roughness
+  int rounds = 0;
+  std::vector<Eigen::Vector3d> n = normal;
+  while(FS::internal::normal_roughness(n, begin, ring) > stop && rounds < 40)
+  {
+    n = FS::internal::filter_face_normals(n, 1., area, centroid, begin, ring, 1, 0.3, 0.);
+    ++rounds;
+  }
+  BOOST_TEST_MESSAGE("noisy box: roughness " << r0 << ", down to a tenth after " << rounds << " rounds");
+  BOOST_TEST(rounds >= 2);
+  BOOST_TEST(rounds < 40);
+  const auto stopped = FS::internal::filter_face_normals(normal, r0, area, centroid, begin, ring, 40, 0.3, stop);
+  const auto exact = FS::internal::filter_face_normals(normal, r0, area, centroid, begin, ring, rounds, 0.3, 0.);
+  const auto fewer = FS::internal::filter_face_normals(normal, r0, area, centroid, begin, ring, rounds - 1, 0.3, 0.);
+  BOOST_TEST((stopped == exact));
+  BOOST_TEST((stopped != fewer));
+}
+
+BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(fs_test::box(1., 1., 1., 2, side));
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(0.)), FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(-5.)), FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(std::nan(""))),
+                    FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(20.).crease_filter_iterations(-1)),
+                    FS::Invalid_input);
+  BOOST_CHECK_THROW(FS::Feature_aligned_segmentation<SM>(m, FS::parameters::crease_angle(20.).crease_filter_iterations(1001)),
+                    FS::Invalid_input);
+}
+
+
+// A rod forty times longer than its radius (length 40, radius 1), 20 facets round it
+// (18 degrees between neighbours, in the gap test's band) and flat ends. The ball of the
+// gap test (5% of the diagonal, about the rod's width) around an end's 90-degree crease
+// holds more band length along the side than crease length round the end; a bend of 85
+// degrees or more on a clean tessellation is a crease whatever its ball holds, so the
+// rod is its side and its two ends.
+BOOST_AUTO_TEST_CASE(the_ends_of_a_long_rod_are_creases)
+{
+  const int around = 20;
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(fs_test::closed_rod([](double, double) { return 1.; }, 40., around, 80, side));
+  BOOST_REQUIRE(CGAL::is_closed(m) && CGAL::is_triangle_mesh(m));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  BOOST_TEST(seg.number_of_crease_edges() == std::size_t(2 * around)); // the two end rings only
+  BOOST_TEST(seg.number_of_patches() == 3u);
+  BOOST_TEST(fs_test::patches_are_sides(m, seg, side, 3));
+}
+
+// A clean tessellation whose creases cut it into its faces is a CAD part: its crest lines
+// weigh alpha - 0.5. One whose creases leave a piece of 90% of the surface or more, with
+// no large planar region (no plane, no ruled strip), is a smooth model with a few creases
+// (a remeshed or subdivided one): its crest lines are its features and keep the full
+// alpha. A rod whose cross-section has four lobes and whose girth swells and shrinks
+// along it (by 10%, every 10 units): its side carries the lobes' four ridges and four
+// valleys along its length, each of its quadrilaterals is planar but no two of them
+// share a plane; its ends are creases. (A plain rod, ruled, is a CAD part whatever its
+// length: the_ends_of_a_long_rod_are_creases.)
+BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_cad_part_only)
+{
+  const auto lobes = [](double a, double z) {
+    return (1. + 0.2 * std::cos(4 * a)) * (1. + 0.1 * std::sin(2 * M_PI * z / 10.));
+  };
+  std::vector<int> side;
+  struct Result { std::size_t patches; double least_crest_alpha, most_crest_alpha; };
+  const auto run = [&](double length, bool full_alpha) {
+    const SM m = fs_test::to_mesh<SM>(fs_test::closed_rod(lobes, length, 96, int(4 * length), side));
+    FS::Feature_aligned_segmentation<SM> seg(
+      m, FS::parameters::crest_lines_on_clean_tessellations(full_alpha));
+    BOOST_TEST(seg.number_of_crease_edges() == 192u); // the two end rings (the side bends by 14 degrees at most)
+    Result r{seg.number_of_patches(), 1e300, -1e300};
+    for(auto e : edges(m))
+      if(seg.is_feature_edge(e) && !seg.is_crease_edge(e))
+      {
+        r.least_crest_alpha = (std::min)(r.least_crest_alpha, seg.alpha(e));
+        r.most_crest_alpha = (std::max)(r.most_crest_alpha, seg.alpha(e));
+      }
+    BOOST_TEST(r.least_crest_alpha <= r.most_crest_alpha); // it has crest lines
+    return r;
+  };
+  // short: the side is 68% of the surface (the ends' areas 1.02 pi = 3.20 and 3.84 at
+  // heights 0 and 2, the side's perimeter 7.20 swelling by up to 9.5% over the length 2):
+  // the creases cut it into its faces, its crest lines weigh 0.6 - 0.5
+  const Result short_default = run(2., false), short_full = run(2., true);
+  BOOST_TEST(short_default.least_crest_alpha == 0.1, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(short_default.most_crest_alpha == 0.1, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(short_full.least_crest_alpha == 0.6, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(short_default.patches == 3u); // the side and the two ends
+  // long (the side 99% of the surface, no two quadrilaterals in one plane): a smooth rod,
+  // its crest lines at the full alpha either way, and they bound patches of its side
+  const Result long_default = run(100., false), long_full = run(100., true);
+  BOOST_TEST(long_default.least_crest_alpha == 0.6, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(long_default.most_crest_alpha == 0.6, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(long_default.patches > 3u);
+  BOOST_TEST(long_default.patches == long_full.patches);
+}
+
+// A noisy tessellation is not clean, and has no exactly planar region to tell a CAD part
+// by; its creases, found on the filtered normals, still cut it into its faces. A rod of
+// length 4 and radius 1 (48 facets round, 16 rings along), every vertex inside its side
+// moved radially by a seeded uniform amount of up to 3% of the radius (0.6% of the
+// diagonal; the end rings stay, so the ends keep their 90-degree creases): its creases
+// are the two end rings, which cut it into the side (80% of the area: 8 pi against pi
+// for each end) and the two ends, so it is a CAD part and its crest lines, which the
+// noise strews along the side, weigh 0.6 - 0.5 (0.6 with
+// crest_lines_on_clean_tessellations(true)). Either way the side is one patch.
+BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_noisy_cad_part)
+{
+  std::vector<int> side;
+  fs_test::Soup s = fs_test::closed_rod([](double, double) { return 1.; }, 4., 48, 16, side);
+  unsigned long long state = 2024;
+  for(std::size_t v = 0; v + 2 < s.points.size(); ++v) // not the two centres of the ends
+  {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double u = double(state >> 11) / double(1ULL << 53); // [0, 1)
+    if(!(s.points[v][2] > 0. && s.points[v][2] < 4.)) continue;
+    const double f = 1. + 0.03 * (2 * u - 1);
+    s.points[v][0] *= f;
+    s.points[v][1] *= f;
+  }
+  const SM m = fs_test::to_mesh<SM>(s);
+  for(bool full_alpha : {false, true})
+  {
+    FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crest_lines_on_clean_tessellations(full_alpha));
+    BOOST_TEST(seg.number_of_crease_edges() == 96u);
+    double least = 1e300, most = -1e300;
+    for(auto e : edges(m))
+      if(seg.is_feature_edge(e) && !seg.is_crease_edge(e))
+      {
+        least = (std::min)(least, seg.alpha(e));
+        most = (std::max)(most, seg.alpha(e));
+      }
+    BOOST_TEST(least <= most); // it has crest lines
+    BOOST_TEST(least == (full_alpha ? 0.6 : 0.1), boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(most == (full_alpha ? 0.6 : 0.1), boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(seg.number_of_patches() == 3u);
+    BOOST_TEST(fs_test::patches_are_sides(m, seg, side, 3));
+  }
+}
+
+// A face cut out alone by its three creases is no patch of its own: it joins the side it
+// bends least from (x=1, 35.3 degrees), and the part is the cube's six sides.
+BOOST_AUTO_TEST_CASE(a_face_isolated_by_creases_joins_its_flattest_neighbour)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(fs_test::cube_with_a_cut_corner(side));
+  BOOST_REQUIRE(CGAL::is_closed(m) && CGAL::is_triangle_mesh(m));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  std::vector<int> joined = side;
+  for(int& k : joined) if(k == 6) k = 1;
+  BOOST_TEST(seg.number_of_patches() == 6u);
+  BOOST_TEST(fs_test::patches_are_sides(m, seg, joined, 6));
+  // the two creases of 65.9 degrees stay, the one of 35.3 is cleared
+  std::size_t triangle_creases = 0;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    const bool on_triangle = side[face(h, m).idx()] == 6 || side[face(opposite(h, m), m).idx()] == 6;
+    if(on_triangle && seg.is_crease_edge(e)) ++triangle_creases;
+  }
+  BOOST_TEST(triangle_creases == 2u);
+}
+
+// A face at a border, cut out by the creases of the edges it shares (here its only one),
+// joins its flattest neighbour too: a 4 x 4 grid of a square with a triangle folded up
+// by 60 degrees along one edge of its border is one patch, and that edge no crease.
+BOOST_AUTO_TEST_CASE(a_border_face_isolated_by_creases_joins_its_flattest_neighbour)
+{
+  const int n = 4;
+  fs_test::Soup s = fs_test::plane(1., n);
+  // the top border runs from (i, n) to (i + 1, n), points n (n + 1) + i, at y = 1
+  const std::size_t p = std::size_t(n * (n + 1) + 1), q = p + 1;
+  const double x = 0.5 * (s.points[p][0] + s.points[q][0]);
+  s.points.push_back({x, 1. + 0.25 * std::cos(M_PI / 3), 0.25 * std::sin(M_PI / 3)});
+  s.faces.push_back({p, q, s.points.size() - 1});
+  const SM m = fs_test::to_mesh<SM>(s);
+  BOOST_REQUIRE(CGAL::is_triangle_mesh(m) && num_faces(m) == std::size_t(2 * n * n + 1));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  BOOST_TEST(seg.number_of_crease_edges() == 0u);
+  BOOST_TEST(seg.number_of_patches() == 1u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
