@@ -4,6 +4,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Feature_segmentation/defaults.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
@@ -59,12 +60,12 @@ int main(int argc, char* argv[])
   double custom_cost = 0, default_cost = 0;
   const std::size_t custom_patches =
     FS::segment_along_features(mesh, vertex_patch,
-                               FS::parameters::alpha(0.6)
+                               FS::parameters::alpha(FS::default_alpha)
                                               .solver(Join_positive_edges())
                                               .cut_cost_output(&custom_cost));
   const std::size_t default_patches =
     FS::segment_along_features(mesh, vertex_patch,
-                               FS::parameters::alpha(0.6).cut_cost_output(&default_cost));
+                               FS::parameters::alpha(FS::default_alpha).cut_cost_output(&default_cost));
 
   std::cout << "Join along positive edges: " << custom_patches << " patches, cut cost "
             << custom_cost << std::endl;

@@ -1,6 +1,7 @@
 // Interactive use: precompute once, then refine globally and locally, merge, undo; each
 // edit re-solves the reduced graph only.
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
+#include <CGAL/Feature_segmentation/defaults.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -29,8 +30,8 @@ int main(int argc, char* argv[])
   // whose feature lines are by default its creases alone; the paper's crest lines give
   // the edits more to act on.
   FS::Feature_aligned_segmentation<Mesh> segmentation(
-    mesh, FS::parameters::alpha(0.6).crest_lines_on_clean_tessellations(true));
-  std::cout << "alpha 0.6: " << segmentation.number_of_patches() << " patches, "
+    mesh, FS::parameters::alpha(FS::default_alpha).crest_lines_on_clean_tessellations(true));
+  std::cout << "alpha " << FS::default_alpha << ": " << segmentation.number_of_patches() << " patches, "
             << segmentation.number_of_oversegments() << " oversegments" << std::endl;
 
   // global refinement

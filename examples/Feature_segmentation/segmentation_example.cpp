@@ -2,6 +2,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Feature_segmentation/defaults.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
@@ -37,7 +38,7 @@ int main(int argc, char* argv[])
   double cut_cost = 0;
   const std::size_t nb_patches =
     FS::segment_along_features(mesh, vertex_patch,
-                               FS::parameters::alpha(0.6)
+                               FS::parameters::alpha(FS::default_alpha)
                                               .face_patch_map(face_patch)
                                               .cut_cost_output(&cut_cost));
 
