@@ -32,9 +32,18 @@
 #include <utility>
 #include <vector>
 
-namespace fs_test {
-
 namespace FS = CGAL::Feature_segmentation;
+
+// The meshes of the tests (in the unnamed namespace, as every suite declares them).
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Surface_mesh<Epick::Point_3> SM;
+typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
+
+} // namespace
+
+namespace fs_test {
 
 
 // Whether the face patches are exactly the sides of a box (or any solid with

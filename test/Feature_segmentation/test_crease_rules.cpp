@@ -5,15 +5,6 @@
 
 #include "crease_meshes.h"
 
-namespace FS = CGAL::Feature_segmentation;
-namespace {
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Surface_mesh<Epick::Point_3> SM;
-typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
-
-} // namespace
-
 BOOST_AUTO_TEST_SUITE(crease_rules)
 
 BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)

@@ -1,18 +1,10 @@
 // Creases (CAD tessellations): the segmentation cut open along edges whose faces bend by
-// crease_angle or more (20 degrees, the default; 180 is none). Boxes give exact answers: their six faces, whatever the
-// resolution and however thin the box, with every triangle on its own side.
+// crease_angle or more (20 degrees, the default; 180 is none). Boxes give exact answers:
+// their six faces, whatever the resolution and however thin the box, with every
+// triangle on its own side.
 #include <boost/test/unit_test.hpp>
 
 #include "crease_meshes.h"
-
-namespace FS = CGAL::Feature_segmentation;
-namespace {
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Surface_mesh<Epick::Point_3> SM;
-typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
-
-} // namespace
 
 BOOST_AUTO_TEST_SUITE(creases)
 
