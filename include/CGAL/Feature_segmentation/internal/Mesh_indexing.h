@@ -60,22 +60,21 @@ public:
         m_nf = tm.number_of_faces();
         return;
       }
-    m_vimap.emplace(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm));
-    m_himap.emplace(get(CGAL::dynamic_halfedge_property_t<std::size_t>(), tm));
-    m_fimap.emplace(get(CGAL::dynamic_face_property_t<std::size_t>(), tm));
-    for(vertex_descriptor v : vertices(tm)) { put(*m_vimap, v, m_vertices.size()); m_vertices.push_back(v); }
-    for(face_descriptor f : faces(tm)) { put(*m_fimap, f, m_faces.size()); m_faces.push_back(f); }
+    m_vertices.emplace(Numbering<vertex_descriptor, VIMap>{get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm), {}});
+    m_edges.emplace(Numbering<edge_descriptor, HIMap>{get(CGAL::dynamic_halfedge_property_t<std::size_t>(), tm), {}});
+    m_faces.emplace(Numbering<face_descriptor, FIMap>{get(CGAL::dynamic_face_property_t<std::size_t>(), tm), {}});
+    for(vertex_descriptor v : vertices(tm)) m_vertices->add(v, v);
+    for(face_descriptor f : faces(tm)) m_faces->add(f, f);
     // Edge i owns halfedges 2i and 2i+1 in this numbering (whatever the mesh's own).
     for(edge_descriptor e : edges(tm))
     {
-      halfedge_descriptor h = halfedge(e, tm);
-      put(*m_himap, h, 2 * m_edges.size());
-      put(*m_himap, opposite(h, tm), 2 * m_edges.size() + 1);
-      m_edges.push_back(e);
+      const halfedge_descriptor h = halfedge(e, tm);
+      put(m_edges->ids, opposite(h, tm), 2 * m_edges->list.size() + 1);
+      m_edges->add(e, h, 2);
     }
-    m_nv = m_vertices.size();
-    m_ne = m_edges.size();
-    m_nf = m_faces.size();
+    m_nv = m_vertices->list.size();
+    m_ne = m_edges->list.size();
+    m_nf = m_faces->list.size();
   }
 
   const TriangleMesh& mesh() const { return m_tm; }
@@ -83,9 +82,9 @@ public:
   std::size_t number_of_edges() const { return m_ne; }
   std::size_t number_of_faces() const { return m_nf; }
 
-  std::size_t id(vertex_descriptor v) const { return index_of(v, m_vimap); }
-  std::size_t id(face_descriptor f) const { return index_of(f, m_fimap); }
-  std::size_t halfedge_id(halfedge_descriptor h) const { return index_of(h, m_himap); }
+  std::size_t id(vertex_descriptor v) const { return index_of(v, m_vertices); }
+  std::size_t id(face_descriptor f) const { return index_of(f, m_faces); }
+  std::size_t halfedge_id(halfedge_descriptor h) const { return index_of(h, m_edges); }
   std::size_t id(edge_descriptor e) const { return halfedge_id(halfedge(e, m_tm)) / 2; }
   std::size_t edge_id(halfedge_descriptor h) const { return halfedge_id(h) / 2; }
 
@@ -107,23 +106,39 @@ public:
   static constexpr std::size_t npos = std::size_t(-1);
 
 private:
+  // The numbering of one kind of element on a mesh that is not numbered already: the
+  // ids (of the elements, or of the halfedges for the edges) and the elements in id order.
+  template <typename Element, typename Ids>
+  struct Numbering
+  {
+    Ids ids;
+    std::vector<Element> list;
+    // Appends `e`, whose id is `stride` times its place; `key` carries the id.
+    template <typename Key>
+    void add(Element e, Key key, std::size_t stride = 1)
+    {
+      put(ids, key, stride * list.size());
+      list.push_back(e);
+    }
+  };
+
   // The id of `x`: its own index on a Surface_mesh without removed elements, else the
-  // map's value.
-  template <typename Descriptor, typename Map>
-  std::size_t index_of(Descriptor x, const std::optional<Map>& map) const
+  // numbering's.
+  template <typename Descriptor, typename N>
+  std::size_t index_of(Descriptor x, const std::optional<N>& numbering) const
   {
     if constexpr(Is_surface_mesh<TriangleMesh>::value)
       if(m_identity) return std::size_t(x.idx());
-    return get(*map, x);
+    return get(numbering->ids, x);
   }
   // The element of id `i`: the same index on a Surface_mesh without removed elements,
-  // else the list's entry.
-  template <typename Descriptor>
-  Descriptor element_at(std::size_t i, const std::vector<Descriptor>& list) const
+  // else the numbering's entry.
+  template <typename Descriptor, typename Ids>
+  Descriptor element_at(std::size_t i, const std::optional<Numbering<Descriptor, Ids> >& numbering) const
   {
     if constexpr(Is_surface_mesh<TriangleMesh>::value)
       if(m_identity) return Descriptor(typename TriangleMesh::size_type(i));
-    return list[i];
+    return numbering->list[i];
   }
 
   template <typename At>
@@ -135,12 +150,9 @@ private:
   const TriangleMesh& m_tm;
   bool m_identity = false;
   std::size_t m_nv = 0, m_ne = 0, m_nf = 0;
-  std::optional<VIMap> m_vimap;
-  std::optional<HIMap> m_himap;
-  std::optional<FIMap> m_fimap;
-  std::vector<vertex_descriptor> m_vertices;
-  std::vector<face_descriptor> m_faces;
-  std::vector<edge_descriptor> m_edges;
+  std::optional<Numbering<vertex_descriptor, VIMap> > m_vertices;
+  std::optional<Numbering<edge_descriptor, HIMap> > m_edges; // ids of the halfedges
+  std::optional<Numbering<face_descriptor, FIMap> > m_faces;
 };
 
 } // namespace internal

@@ -218,7 +218,7 @@ std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, cons
 }
 
 // The most rounds of filtering a smooth model gets (raw roughness between
-// crease_filter_roughness and crease_gap_raw_roughness). Its roughness is mostly the
+// crease_filter_roughness and Crease_gap::raw_roughness). Its roughness is mostly the
 // curvature of the surface, which the filter barely lowers (rockerarm took 32 rounds to
 // reach 0.01, pulley never did in 40); 3 rounds already give the patch counts of 40 on
 // the paper's models, and 10 leave a margin for noisier scans.
@@ -248,11 +248,11 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   const double raw_roughness = normal_roughness(normal, begin, ring);
   clean = raw_roughness <= crease_filter_roughness;
   // A clean tessellation is not filtered. A smooth model (raw roughness up to
-  // crease_gap_raw_roughness) is filtered until its median face is smooth or for
+  // Crease_gap::raw_roughness) is filtered until its median face is smooth or for
   // crease_smooth_filter_iterations rounds: each round also blurs its moderate bends. A noisy mesh gets every round: stopping when the
   // median face is smooth leaves the faces tilted far from all their neighbours (which
   // the range Gaussian protects) as spurious creases.
-  const double stop = raw_roughness <= crease_gap_raw_roughness ? crease_filter_roughness : 0.;
+  const double stop = raw_roughness <= Crease_gap::raw_roughness ? crease_filter_roughness : 0.;
   angle = raw_roughness > crease_filter_roughness && filter_iterations > 0
             ? dihedral_angles(idx, filter_face_normals(normal, raw_roughness, area, centroid, begin, ring,
                                                        stop > 0 ? (std::min)(filter_iterations, crease_smooth_filter_iterations)
@@ -262,7 +262,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
-                        clean ? crease_strong_angle : 360.);
+                        clean ? Crease_gap::strong_angle : 360.);
   double diagonal = 0.; // of the bounding box, for the rules of clean tessellations
   if(clean)
   {

@@ -32,29 +32,30 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// The test that tells a crease from a strong bend of a smooth surface: within the ball
-// around a candidate edge's midpoint (radius crease_gap_radius of the diagonal, at least
-// two mean edge lengths), on the surface reached from the candidate, the edges bending
-// by [crease_gap_band * crease_angle, crease_angle)
-// may have at most crease_gap_ratio times the length of the candidates. A CAD
-// tessellation leaves a gap below its creases (on the 14 parts of the evaluation, no
-// edge between 15 and 30 degrees apart from the creases); a coarse or scanned smooth
-// surface bends by every angle, so its strong bends come with as many slightly weaker
-// ones around them.
-constexpr double crease_gap_band = 0.75;
-constexpr double crease_gap_ratio = 0.5;
-constexpr double crease_gap_radius = 0.05;
-// On a clean tessellation, a candidate bending by this many degrees or more is a crease
-// whatever its ball holds: the facets of a curved face bend far less (by 22.5 degrees
-// with 16 round a circle), while the ball of a long thin part's end (a tube twenty times
-// longer than wide: radius 5% of the diagonal, twice its width) holds more of them than
-// of the end's crease. Smooth models are not clean and keep the test for every bend.
-constexpr double crease_strong_angle = 85.;
-// The raw roughness (normal_roughness) up to which the band is read on the raw angles:
-// clean CAD parts measure at most 0.0085 and the paper's smooth models 0.012 to 0.028,
-// whose filtered normals turn smooth bends into staircases with gaps; noisy meshes
-// (0.035 and more at 0.1% of the diagonal) are read on the filtered angles.
-constexpr double crease_gap_raw_roughness = 0.03;
+// The constants of the gap test, which tells a crease from a strong bend of a smooth
+// surface: within the ball around a candidate edge's midpoint (radius `radius` of the
+// diagonal, at least two mean edge lengths), on the surface reached from the candidate,
+// the edges bending by [band * crease_angle, crease_angle) may have at most `ratio`
+// times the length of the candidates. A CAD tessellation leaves a gap below its creases
+// (on the 14 parts of the evaluation, no edge between 15 and 30 degrees apart from the
+// creases); a coarse or scanned smooth surface bends by every angle, so its strong bends
+// come with as many slightly weaker ones around them.
+struct Crease_gap
+{
+  static constexpr double band = 0.75, ratio = 0.5, radius = 0.05;
+  // On a clean tessellation, a candidate bending by `strong_angle` degrees or more is a
+  // crease whatever its ball holds: the facets of a curved face bend far less (by 22.5
+  // degrees with 16 round a circle), while the ball of a long thin part's end (a tube
+  // twenty times longer than wide: radius 5% of the diagonal, twice its width) holds
+  // more of them than of the end's crease. Smooth models are not clean and keep the
+  // test for every bend.
+  static constexpr double strong_angle = 85.;
+  // The raw roughness (normal_roughness) up to which the band is read on the raw angles:
+  // clean CAD parts measure at most 0.0085 and the paper's smooth models 0.012 to 0.028,
+  // whose filtered normals turn smooth bends into staircases with gaps; noisy meshes
+  // (0.035 and more at 0.1% of the diagonal) are read on the filtered angles.
+  static constexpr double raw_roughness = 0.03;
+};
 
 // The lengths one ball of the gap test holds: of the edges bending by crease_angle or
 // more, and of those in the band below.
@@ -64,13 +65,13 @@ struct Gap_lengths
 };
 
 // Whether an edge is in the band below the creases: bending by less than crease_angle,
-// but by crease_gap_band * crease_angle or more on the band's angles.
+// but by Crease_gap::band * crease_angle or more on the band's angles.
 inline bool is_crease_gap_band_edge(double angle, double band_angle, double crease_angle)
 {
-  return angle < crease_angle && band_angle >= crease_gap_band * crease_angle;
+  return angle < crease_angle && band_angle >= Crease_gap::band * crease_angle;
 }
 
-// The radius of the gap test's balls (crease_gap_radius of the diagonal of the bounding
+// The radius of the gap test's balls (Crease_gap::radius of the diagonal of the bounding
 // box, at least two mean edge lengths: on a coarse mesh the ball must still reach the
 // candidate's neighbours), from the vertices and the edges' two vertices.
 template <typename Point, typename Ends>
@@ -87,7 +88,7 @@ double crease_gap_ball_radius(const std::vector<Point>& points, const std::vecto
     mean_edge += (b - a).norm();
   }
   mean_edge /= double((std::max)(ends.size(), std::size_t(1)));
-  return (std::max)(crease_gap_radius * (hi - lo).norm(), 2 * mean_edge);
+  return (std::max)(Crease_gap::radius * (hi - lo).norm(), 2 * mean_edge);
 }
 
 // What the gap test reads of the mesh's geometry, made once: the vertices' positions

@@ -88,7 +88,7 @@ inline std::vector<std::size_t> candidates_near_band_edges(const Edge_geometry& 
 
 // Drops the candidates (is_crease, from `angle`) that fail the gap test; `raw` are the
 // dihedral angles of the unfiltered normals, `raw_roughness` their roughness; a candidate
-// bending by `keep_from` degrees or more is kept untested (crease_strong_angle). Each
+// bending by `keep_from` degrees or more is kept untested (Crease_gap::strong_angle). Each
 // candidate's test reads the angles only, never is_crease, so the candidates are tested
 // independently: by TBB's threads if `parallel`, with the same result at any count.
 // Only the candidates near a band edge are searched (candidates_near_band_edges()).
@@ -100,14 +100,14 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
   std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < is_crease.size(); ++e)
     if(is_crease[e] && angle[e] < keep_from) candidates.push_back(e);
-  const std::vector<double>& band_angle = raw_roughness <= crease_gap_raw_roughness ? raw : angle;
+  const std::vector<double>& band_angle = raw_roughness <= Crease_gap::raw_roughness ? raw : angle;
   Edge_geometry geometry = edge_geometry(idx, vpm);
   const std::vector<std::size_t> searched =
     candidates_near_band_edges(geometry, angle, band_angle, crease_angle, candidates);
   const std::vector<Gap_lengths> lengths =
     crease_gap_lengths(idx, std::move(geometry), angle, band_angle, crease_angle, searched, parallel);
   for(std::size_t i = 0; i < searched.size(); ++i)
-    if(lengths[i].band > crease_gap_ratio * lengths[i].crease) is_crease[searched[i]] = 0;
+    if(lengths[i].band > Crease_gap::ratio * lengths[i].crease) is_crease[searched[i]] = 0;
 }
 
 } // namespace internal
