@@ -23,93 +23,11 @@ import os
 import re
 import sys
 
-RESULTS = ""
-ORGANIC = ("fertility", "botijo", "elk", "hand", "bunny")
+import results_common
+from results_common import *  # noqa: F401,F403 (the readers and formatters)
+from results_quality import (quality_abc_dev, quality_cad, quality_coverage, quality_generated, quality_means,
+                             quality_nut, quality_resolution)
 
-
-def is_organic(model):
-    return model.split("_")[0] in ORGANIC
-
-
-class TableError(Exception):
-    pass
-
-
-def read_csv(name):
-    path = os.path.join(RESULTS, name)
-    if not os.path.exists(path):
-        raise TableError(f"{path} is missing (run the benchmark that writes it; see "
-                         f"benchmark/Feature_segmentation/results/README.md)")
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def provenance(name):
-    path = os.path.join(RESULTS, os.path.splitext(name)[0] + ".provenance.txt")
-    if not os.path.exists(path):
-        raise TableError(f"{path} is missing: every results CSV needs its provenance")
-    fields = {}
-    with open(path) as f:
-        for line in f:
-            key, _, value = line.partition(":")
-            fields[key.strip()] = value.strip()
-    for key in ("program", "machine", "date"):
-        if not fields.get(key):
-            raise TableError(f"{path}: no '{key}'")
-    return fields
-
-
-def source_line(name):
-    p = provenance(name)
-    arguments = (" " + p["arguments"]) if p.get("arguments") else ""
-    return (f"<em>Measured on {p['date']}, {p['machine']}, by `{p['program']}{arguments}`; "
-            f"source `benchmark/Feature_segmentation/results/{name}`.</em>")
-
-
-def number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return None
-
-
-def fixed(text, digits=3):
-    x = number(text)
-    return "" if x is None else f"{x:.{digits}f}"
-
-
-def count(text):
-    x = number(text)
-    return "" if x is None else f"{int(round(x)):,}"
-
-
-def seconds(text):
-    """Seconds with three significant digits at least, no more than three decimals."""
-    x = number(text)
-    if x is None:
-        return ""
-    return f"{x:.3f}" if x < 10 else f"{x:.2f}" if x < 100 else f"{x:.1f}"
-
-
-def markdown(header, rows, align=None):
-    align = align or ["---"] * len(header)
-    lines = ["| " + " | ".join(header) + " |", "|" + "|".join(align) + "|"]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(lines)
-
-
-def growth_exponent(points):
-    """Least-squares slope of log y against log x."""
-    pts = [(math.log(x), math.log(y)) for x, y in points if x > 0 and y > 0]
-    if len(pts) < 2:
-        return None
-    mx = sum(p[0] for p in pts) / len(pts)
-    my = sum(p[1] for p in pts) / len(pts)
-    sxx = sum((p[0] - mx) ** 2 for p in pts)
-    return sum((p[0] - mx) * (p[1] - my) for p in pts) / sxx if sxx > 0 else None
-
-
-# ---- Performance --------------------------------------------------------------------
 
 def perf_stages():
     name = "bench_segmentation.csv"
@@ -315,153 +233,6 @@ def perf_batch():
 
 # ---- Quality ------------------------------------------------------------------------
 
-def quality_nut():
-    name = "quality_table.csv"
-    rows = [r for r in read_csv(name) if r["model"] == "abc_00000006"]
-    if not rows:
-        raise TableError(f"{name}: no rows of abc_00000006")
-    body = []
-    for r in rows:
-        setting = r["setting"] + (", smoothed" if r["smoothed"] == "1" else "") + f" ({r['role']})"
-        body.append([r["method"], setting, r["patches"], fixed(r["precision"]), fixed(r["recall"]),
-                     fixed(r["f_score"]), fixed(r["rand_index"]), r["over_segmentation"], r["under_segmentation"],
-                     fixed(r["sharp_curve_recall"]), fixed(r["cut_cost"], 2), fixed(r["curve_f_score"])])
-    return markdown(["method", "setting", "patches", "boundary P", "boundary R", "boundary F", "Rand index", "over",
-                     "under", "sharp-curve recall", "cut cost", "curve F"], body) + "\n\n" + source_line(name)
-
-
-def quality_coverage():
-    name = "quality_table.csv"
-    rows = read_csv(name)
-    groups = []
-    for r in rows:
-        key = (r["method"], r["role"], r["smoothed"])
-        if key not in groups:
-            groups.append(key)
-    body = []
-    for method, role, smoothed in groups:
-        sel = [r for r in rows if (r["method"], r["role"], r["smoothed"]) == (method, role, smoothed)]
-
-        def mean(field, keep):
-            xs = [number(r[field]) for r in sel if keep(r) and number(r[field]) is not None]
-            return (sum(xs) / len(xs), len(xs)) if xs else (None, 0)
-
-        def cell(field, keep, curve_field=None):
-            m, n = mean(field, keep)
-            text = "" if m is None else f"{m:.3f}"
-            if curve_field and smoothed == "1":
-                c, _ = mean(curve_field, keep)
-                text += "" if c is None else f" ({c:.3f})"
-            return text + f" ({n} model{'' if n == 1 else 's'})" if m is not None and n != expected(keep) else text
-
-        def expected(keep):
-            return len({r["model"] for r in rows if keep(r)})
-
-        cad = lambda r: not is_organic(r["model"])
-        organic = lambda r: is_organic(r["model"])
-        every = lambda r: True
-        patches = sorted(int(r["patches"]) for r in sel if number(r["patches"]) is not None)
-        median = patches[len(patches) // 2] if patches else ""
-        body.append([method, role + (", smoothed" if smoothed == "1" else ""),
-                     cell("coverage", cad, "curve_coverage"), cell("coverage", organic, "curve_coverage"),
-                     cell("redundancy_fraction", every, "curve_redundancy_fraction"), f"{median:,}" if median != "" else ""])
-    models = sorted({r["model"] for r in rows})
-    cad_count = sum(1 for m in models if not is_organic(m))
-    return markdown(["method", "setting", f"mean coverage, {cad_count} CAD-like models",
-                     f"mean coverage, {len(models) - cad_count} organic models",
-                     f"mean redundancy, all {len(models)}", "median patches"], body) + "\n\n" + source_line(name)
-
-
-def quality_resolution():
-    name = "resolution.csv"
-    rows = read_csv(name)
-    body = [[r["subdivisions"], count(r["faces"]), r["patches"], fixed(r["precision"]), fixed(r["recall"]),
-             fixed(r["f"]), seconds(r["seconds"])] for r in rows]
-    return markdown(["subdivisions", "faces", "patches", "boundary P", "boundary R",
-                     "boundary F against the coarsest", "seconds"], body,
-                    ["---:"] * 7) + "\n\n" + source_line(name)
-
-
-CAD_METHODS = [("default", "default"), ("paper", "paper's pipeline"), ("sharp20", "sharp edges 20"),
-               ("sharp45", "45"), ("sharp60", "60"), ("ransac", "Efficient RANSAC"), ("vsa", "VSA (true count)")]
-
-
-def cad_rows():
-    name = "cad_parts.csv"
-    return name, read_csv(name)
-
-
-def quality_parts(set_name, label):
-    name, rows = cad_rows()
-    parts = []
-    for r in rows:
-        if r["set"] == set_name and number(r["noise"]) == 0 and r["part"] not in [p["part"] for p in parts]:
-            parts.append(r)
-    if not parts:
-        raise TableError(f"{name}: no clean rows of the set {set_name}")
-    body = []
-    for p in parts:
-        cells = [label(p["part"]), count(p["faces"]), p["true_patches"], fixed(p["tangent_share"])]
-        for method, _ in CAD_METHODS:
-            r = next((r for r in rows if r["set"] == set_name and r["part"] == p["part"] and number(r["noise"]) == 0
-                      and r["method"] == method), None)
-            cells.append(f"{fixed(r['f'])} ({r['patches']})" if r else "")
-        body.append(cells)
-    mean = [f"mean of the {len(parts)} parts", "", "", ""]
-    for method, _ in CAD_METHODS:
-        r = next((r for r in rows if r["set"] == "mean " + set_name and number(r["noise"]) == 0
-                  and r["method"] == method), None)
-        mean.append(f"**{fixed(r['f'])}**" if r else "")
-    body.append(mean)
-    return markdown(["part", "faces", "true patches", "tang."] + [m[1] for m in CAD_METHODS], body,
-                    ["---", "---:", "---:", "---:"] + ["---:"] * len(CAD_METHODS)) + "\n\n" + source_line(name)
-
-
-def quality_cad():
-    return quality_parts("cad", lambda part: part.split("_")[0])
-
-
-def quality_abc_dev():
-    return quality_parts("abc-dev", lambda part: part.replace("abc_", ""))
-
-
-def quality_generated():
-    def label(part):
-        kind, _, resolution = part.rpartition("_")
-        return kind.replace("_", " ") + "&nbsp;" + resolution
-    return quality_parts("generated", label)
-
-
-def quality_means():
-    name, rows = cad_rows()
-    sets = []
-    for r in rows:
-        if r["set"].startswith("mean ") and r["set"] not in sets:
-            sets.append(r["set"])
-    levels = sorted({number(r["noise"]) for r in rows if r["set"].startswith("mean ")})
-    body = []
-    for s in sets:
-        for level in levels:
-            cells = [s[len("mean "):], f"{100 * level:g}%" if level else "0"]
-            any_value = False
-            for method, _ in CAD_METHODS:
-                r = next((r for r in rows if r["set"] == s and number(r["noise"]) == level and r["method"] == method),
-                         None)
-                cells.append(fixed(r["f"]) if r else "")
-                any_value |= r is not None
-            if any_value:
-                body.append(cells)
-    nut = [r for r in rows if r["set"] == "abc" and number(r["noise"]) == 0]
-    text = markdown(["set", "noise (of the diagonal)"] + [m[1] for m in CAD_METHODS], body,
-                    ["---", "---:"] + ["---:"] * len(CAD_METHODS))
-    if nut:
-        names = dict(CAD_METHODS, sharp45="sharp edges 45", sharp60="sharp edges 60")
-        cells = [f"{names.get(r['method'], r['method'])} {fixed(r['f'])} ({r['patches']})" for r in nut]
-        text += (f"\n\nThe hex nut (ABC 00000006, {count(nut[0]['faces'])} faces, {nut[0]['true_patches']} true "
-                 f"patches), clean: " + ", ".join(cells) + ".")
-    return text + "\n\n" + source_line(name)
-
-
 TABLES = {
     "perf_stages": perf_stages,
     "perf_fig8": perf_fig8,
@@ -505,11 +276,10 @@ def check_manual(manual):
 
 
 def main(argv):
-    global RESULTS
     if len(argv) != 4:
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
         return 2
-    RESULTS, manual, out = argv[1:]
+    results_common.RESULTS, manual, out = argv[1:]
     os.makedirs(out, exist_ok=True)
     problems = []
     for name, make in TABLES.items():
