@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The one table of the program's options: for every option its keyword, kind, scope, the
 // line of --help, and how a value is checked and stored in Options. The command-line
-// parser (program_options.h) registers its flags from it, the Python module maps its
-// keyword arguments through it, the replay line of edits.txt is written from it, and the
-// Dask runner builds its command line from it: a name, a check or a message is written
-// once.
+// parser (program_options.h) registers its flags from it and --help lists them
+// (program_usage.h), the Python module maps its keyword arguments through it, the replay
+// line of edits.txt and the options of summary.json are written from it, and the Dask
+// runner builds its command line from it: a name, a check or a message is written once.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_APP_OPTION_TABLE_H
 #define CGAL_FEATURE_SEGMENTATION_APP_OPTION_TABLE_H
