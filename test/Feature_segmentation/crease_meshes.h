@@ -130,22 +130,12 @@ void slotted_plate_is_its_ten_faces(int refine)
   BOOST_TEST(patches_are_sides(m, [&](auto f) { return patch.at(f); }, side, 10));
 }
 
-// The unit cube with its corner (1,1,1) cut off by the plane 2x + y + z = 3.8: one
-// triangle, A = (0.9,1,1), B = (1,0.8,1), C = (1,1,0.8), the pentagons fanned into
-// triangles. `side[f]`: 0..5 for x=0, x=1, y=0, y=1, z=0, z=1, and 6 for the triangle.
-// The triangle's normal (2,1,1)/sqrt(6) bends by 35.3 degrees from the side x=1 and by
-// 65.9 from y=1 and z=1: three creases around one face.
-inline Soup cube_with_a_cut_corner(std::vector<int>& side)
+// A convex solid from its planar polygons, each with its outward normal, fanned into
+// triangles; side[f]: the polygon of triangle f.
+inline Soup convex_polyhedron(const std::vector<std::pair<std::vector<std::array<double, 3> >, std::array<double, 3> > >& polygons,
+                              std::vector<int>& side)
 {
   typedef std::array<double, 3> P;
-  const std::vector<std::pair<std::vector<P>, P> > polygons = { // the polygon, its outward normal
-    {{{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}, {-1, 0, 0}},
-    {{{1, 0, 0}, {1, 1, 0}, {1, 1, 0.8}, {1, 0.8, 1}, {1, 0, 1}}, {1, 0, 0}},
-    {{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}, {0, -1, 0}},
-    {{{0, 1, 0}, {1, 1, 0}, {1, 1, 0.8}, {0.9, 1, 1}, {0, 1, 1}}, {0, 1, 0}},
-    {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, -1}},
-    {{{0, 0, 1}, {1, 0, 1}, {1, 0.8, 1}, {0.9, 1, 1}, {0, 1, 1}}, {0, 0, 1}},
-    {{{0.9, 1, 1}, {1, 0.8, 1}, {1, 1, 0.8}}, {2, 1, 1}}};
   fs_test::Soup s;
   std::map<P, std::size_t> id;
   auto point = [&](const P& p) {
@@ -170,6 +160,39 @@ inline Soup cube_with_a_cut_corner(std::vector<int>& side)
     }
   }
   return s;
+}
+
+// The unit cube with its corner (1,1,1) cut off by the plane 2x + y + z = 3.8: one
+// triangle, A = (0.9,1,1), B = (1,0.8,1), C = (1,1,0.8), the pentagons fanned into
+// triangles. `side[f]`: 0..5 for x=0, x=1, y=0, y=1, z=0, z=1, and 6 for the triangle.
+// The triangle's normal (2,1,1)/sqrt(6) bends by 35.3 degrees from the side x=1 and by
+// 65.9 from y=1 and z=1: three creases around one face.
+inline Soup cube_with_a_cut_corner(std::vector<int>& side)
+{
+  return convex_polyhedron({ // the polygon, its outward normal
+    {{{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}, {-1, 0, 0}},
+    {{{1, 0, 0}, {1, 1, 0}, {1, 1, 0.8}, {1, 0.8, 1}, {1, 0, 1}}, {1, 0, 0}},
+    {{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}, {0, -1, 0}},
+    {{{0, 1, 0}, {1, 1, 0}, {1, 1, 0.8}, {0.9, 1, 1}, {0, 1, 1}}, {0, 1, 0}},
+    {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, -1}},
+    {{{0, 0, 1}, {1, 0, 1}, {1, 0.8, 1}, {0.9, 1, 1}, {0, 1, 1}}, {0, 0, 1}},
+    {{{0.9, 1, 1}, {1, 0.8, 1}, {1, 1, 0.8}}, {2, 1, 1}}}, side);
+}
+
+// The unit cube with its edge x = y = 1 cut off by the plane x + 2y = 2.85: a chamfer
+// quad of two triangles, from (1, 0.925, z) to (0.85, 1, z). `side[f]`: 0..5 for x=0,
+// x=1, y=0, y=1, z=0, z=1, and 6 for the chamfer. The chamfer's normal (1,2,0)/sqrt(5)
+// bends by 26.6 degrees from the side y=1, 63.4 from x=1 and 90 from z=0 and z=1.
+inline Soup cube_with_a_chamfered_edge(std::vector<int>& side)
+{
+  return convex_polyhedron({
+    {{{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}, {-1, 0, 0}},
+    {{{1, 0, 0}, {1, 0.925, 0}, {1, 0.925, 1}, {1, 0, 1}}, {1, 0, 0}},
+    {{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}, {0, -1, 0}},
+    {{{0, 1, 0}, {0.85, 1, 0}, {0.85, 1, 1}, {0, 1, 1}}, {0, 1, 0}},
+    {{{0, 0, 0}, {1, 0, 0}, {1, 0.925, 0}, {0.85, 1, 0}, {0, 1, 0}}, {0, 0, -1}},
+    {{{0, 0, 1}, {1, 0, 1}, {1, 0.925, 1}, {0.85, 1, 1}, {0, 1, 1}}, {0, 0, 1}},
+    {{{1, 0.925, 0}, {0.85, 1, 0}, {0.85, 1, 1}, {1, 0.925, 1}}, {1, 2, 0}}}, side);
 }
 
 // The box of box() with noise along the normals: every vertex inside a side (not on a

@@ -200,6 +200,34 @@ BOOST_AUTO_TEST_CASE(a_face_isolated_by_creases_joins_its_flattest_neighbour)
   BOOST_TEST(triangle_creases == 2u);
 }
 
+// Two faces cut out together by their creases (a chamfer quad of two triangles) are no
+// patch of their own either: they join the side they bend least from (y=1, 26.6
+// degrees), and the part is the cube's six sides, which are quads of two triangles too
+// but bend by 90 degrees from every neighbour. No face of the development data's ground
+// truth has fewer than three triangles.
+BOOST_AUTO_TEST_CASE(two_faces_isolated_by_creases_join_their_flattest_neighbour)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(fs_test::cube_with_a_chamfered_edge(side));
+  BOOST_REQUIRE(CGAL::is_closed(m) && CGAL::is_triangle_mesh(m));
+  BOOST_REQUIRE(std::count(side.begin(), side.end(), 6) == 2);
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  std::vector<int> joined = side;
+  for(int& k : joined) if(k == 6) k = 3;
+  BOOST_TEST(seg.number_of_patches() == 6u);
+  BOOST_TEST(fs_test::patches_are_sides(m, seg, joined, 6));
+  // the chamfer keeps its creases of 63.4 and 90 degrees (to x=1: 1 edge; to z=0 and
+  // z=1: 1 edge each); the one of 26.6 to y=1 is cleared
+  std::size_t chamfer_creases = 0;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    const int a = side[face(h, m).idx()], b = side[face(opposite(h, m), m).idx()];
+    if((a == 6) != (b == 6) && seg.is_crease_edge(e)) ++chamfer_creases;
+  }
+  BOOST_TEST(chamfer_creases == 3u);
+}
+
 // A face at a border, cut out by the creases of the edges it shares (here its only one),
 // joins its flattest neighbour too: a 4 x 4 grid of a square with a triangle folded up
 // by 60 degrees along one edge of its border is one patch, and that edge no crease.

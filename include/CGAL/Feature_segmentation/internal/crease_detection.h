@@ -230,8 +230,8 @@ constexpr int crease_smooth_filter_iterations = 10;
 // the normals neither makes creases in flat parts nor breaks real ones, and that pass
 // the gap test (keep_creases_with_gap), marked 1; on a clean tessellation (raw
 // roughness at most crease_filter_roughness) and if `tangent`, the curvature
-// discontinuities (mark_tangent_discontinuities), marked 2; a face that these would
-// cut out alone keeps its flattest edge (join_isolated_crease_faces). `angle` receives
+// discontinuities (mark_tangent_discontinuities), marked 2; a piece of one or two faces
+// that these would cut out keeps its flattest edge (join_isolated_crease_faces). `angle` receives
 // the filtered angles, `clean` whether the tessellation is clean, `cad` whether it is
 // one of a CAD part (is_cad_tessellation if clean, else creases_cut_into_pieces).
 template <typename TriangleMesh, typename VPM>

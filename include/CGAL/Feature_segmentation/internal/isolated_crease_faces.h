@@ -1,19 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Faces that the creases would cut out alone. On a coarse CAD tessellation (a small hole
-// of a few segments, the fan of triangles where a fillet ends in a corner) a triangle can
-// bend by more than the crease angle from each of its three neighbours (or, at a border,
-// from each neighbour it has); cut along them it would be a patch of one face, which no
-// B-rep face of the development data is (none of the 30 parts' ground-truth patches is a
-// single triangle). One face is no
-// evidence of a surface of its own: it stays with the neighbour it bends least from.
+// Pieces of one or two faces that the creases would cut out. On a coarse CAD
+// tessellation (a small hole of a few segments, the fan of triangles where a fillet ends
+// in a corner, the quads of a narrow fillet that turns by more than the crease angle
+// from one quad to the next) a triangle or a quad can bend by more than the crease angle
+// from every neighbour; cut along these creases it would be a patch of its own, which no
+// B-rep face of the development data is (none of the 30 parts' ground-truth patches has
+// fewer than three triangles, while the creases of ABC 00000026 cut out 249 quads of a
+// narrow fillet). So few faces are no evidence of a surface of their own: they stay
+// with the neighbour they bend least from, unless they are a quad bent strongly from
+// every neighbour (a box's side).
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_ISOLATED_CREASE_FACES_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_ISOLATED_CREASE_FACES_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 
+
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -21,35 +26,82 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// Clears, for every face of the mesh of `idx` whose edges are all creases (nonzero in
-// `is_crease`) or border edges, at least one a crease, the crease flag of its crease edge
-// of smallest dihedral angle `angle` (the first such edge around the face on a tie).
-// Faces are visited in index order, and a cleared edge no longer isolates the face
-// across it, so the result does not depend on anything but the indexing. Returns the
-// number of edges cleared.
+// The most faces of a piece that the creases would cut out and that is still joined to a
+// neighbour (join_isolated_crease_faces): a quad's two triangles; a piece of more than
+// one face is joined only across a crease of less than crease_piece_max_angle degrees
+// (the quads of a hole of 8 segments bend by 45 degrees from each other, the sides of a
+// hexagonal nut by 60 and those of a box by 90).
+constexpr std::size_t crease_piece_max_faces = 2;
+constexpr double crease_piece_max_angle = 60.;
+
+// Joins the pieces that the creases (nonzero in `is_crease`) would cut out of the mesh of
+// `idx` with at most `max_faces` faces to a neighbour: a piece is a set of faces connected
+// through edges that are no crease; for each piece of at most `max_faces` faces that has
+// a crease on its boundary (of less than crease_piece_max_angle degrees for a piece of
+// more than one face), the crease flag of its boundary crease of smallest dihedral angle
+// `angle` is cleared (the first in face order on a tie), and this is repeated on the
+// larger pieces so made until none is left to join.
+// Pieces are visited in the order of their first face, so the result does not depend on
+// anything but the indexing. Returns the number of edges cleared.
 template <typename TriangleMesh>
 std::size_t join_isolated_crease_faces(const Mesh_indexing<TriangleMesh>& idx, const std::vector<double>& angle,
-                                       std::vector<char>& is_crease)
+                                       std::vector<char>& is_crease,
+                                       std::size_t max_faces = crease_piece_max_faces)
 {
   const TriangleMesh& tm = idx.mesh();
+  const std::size_t nf = idx.number_of_faces();
   std::size_t cleared = 0;
-  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  std::vector<std::size_t> piece(nf), size, stack, weakest;
+  for(bool changed = true; changed;)
   {
-    std::size_t creases = 0, interior = 0, weakest = idx.npos;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    changed = false;
+    // the pieces, numbered in the order of their first face
+    std::fill(piece.begin(), piece.end(), idx.npos);
+    size.clear();
+    for(std::size_t f0 = 0; f0 < nf; ++f0)
     {
-      if(is_border(opposite(h, tm), tm)) continue; // a border edge bounds the face too
-      ++interior;
-      const std::size_t e = idx.edge_id(h);
-      if(!is_crease[e]) continue;
-      ++creases;
-      if(weakest == idx.npos || angle[e] < angle[weakest]) weakest = e;
+      if(piece[f0] != idx.npos) continue;
+      const std::size_t id = size.size();
+      size.push_back(0);
+      piece[f0] = id;
+      stack.assign(1, f0);
+      while(!stack.empty())
+      {
+        const std::size_t f = stack.back();
+        stack.pop_back();
+        ++size[id];
+        for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+        {
+          const std::size_t g = idx.face_id(opposite(h, tm));
+          if(g == idx.npos || is_crease[idx.edge_id(h)] || piece[g] != idx.npos) continue;
+          piece[g] = id;
+          stack.push_back(g);
+        }
+      }
     }
-    if(creases > 0 && creases == interior)
+    // the weakest boundary crease of every small piece
+    weakest.assign(size.size(), idx.npos);
+    for(std::size_t f = 0; f < nf; ++f)
     {
-      is_crease[weakest] = 0;
-      ++cleared;
+      const std::size_t id = piece[f];
+      if(size[id] > max_faces) continue;
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+      {
+        const std::size_t e = idx.edge_id(h);
+        if(!is_crease[e] || idx.face_id(opposite(h, tm)) == idx.npos) continue;
+        if(weakest[id] == idx.npos || angle[e] < angle[weakest[id]]) weakest[id] = e;
+      }
     }
+    for(std::size_t id = 0; id < size.size(); ++id)
+      if(size[id] > 1 && weakest[id] != idx.npos && angle[weakest[id]] >= crease_piece_max_angle)
+        weakest[id] = idx.npos;
+    for(std::size_t id = 0; id < size.size(); ++id)
+      if(weakest[id] != idx.npos && is_crease[weakest[id]])
+      {
+        is_crease[weakest[id]] = 0;
+        ++cleared;
+        changed = true;
+      }
   }
   return cleared;
 }
