@@ -55,6 +55,13 @@ struct Option_entry
   /// the program passes only when given).
   std::string shown_default = {};
 
+  /// The value in effect: `value(o)`, or the library default it leaves unset.
+  std::string effective_value(const Options& o) const
+  {
+    const std::string v = value(o);
+    return v.empty() ? shown_default : v;
+  }
+
   /// "--crease-angle", "--no-ridges"
   std::string flag() const
   {

@@ -41,7 +41,7 @@ inline void print_short_usage(std::ostream& os)
     std::vector<std::string> words;
     std::istringstream help((e.only ? std::string(*e.only == Command::EDIT ? "edit: " : "batch: ") : "") + e.help);
     for(std::string w; help >> w;) words.push_back(w);
-    const std::string shown = e.shown_default.empty() ? e.value(defaults) : e.shown_default;
+    const std::string shown = e.effective_value(defaults);
     if(e.kind != Option_kind::SWITCH && !shown.empty())
       words.push_back("(default: " + shown + ")");
     // at column 28, on the next line after a long flag, in lines of 80 columns

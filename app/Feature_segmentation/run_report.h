@@ -167,7 +167,7 @@ inline nlohmann::ordered_json options_json(const Options& options)
   for(const Option_entry& e : option_table())
   {
     if(!e.segmentation && e.keyword != "edits" && e.keyword != "threads") continue;
-    const std::string v = e.value(options).empty() ? e.shown_default : e.value(options);
+    const std::string v = e.effective_value(options);
     if(e.kind == Option_kind::SWITCH) j[e.keyword] = v == "true";
     else if(e.kind == Option_kind::INTEGER) j[e.keyword] = std::stoll(v);
     else if(e.kind == Option_kind::NUMBER) j[e.keyword] = std::stod(v);

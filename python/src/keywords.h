@@ -90,7 +90,7 @@ inline py::dict option_descriptions()
   for(const Option_entry& e : option_table())
   {
     if(!e.segmentation) continue;
-    const std::string shown = e.shown_default.empty() ? e.value(defaults) : e.shown_default;
+    const std::string shown = e.effective_value(defaults);
     py::object value = py::none();
     if(e.kind == Option_kind::SWITCH) value = py::bool_(shown == "true");
     else if(e.kind == Option_kind::INTEGER && !shown.empty()) value = py::int_(std::stoll(shown));
