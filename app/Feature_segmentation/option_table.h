@@ -159,7 +159,7 @@ inline const std::vector<Option_entry>& option_table()
            o.crease_angle = in.number;
          },
          number_value(&Options::crease_angle)});
-    add({"crease_filter", Kind::INTEGER, false, true, {}, "N", "normal filtering rounds on rough meshes",
+    add({"crease_filter", Kind::INTEGER, false, true, {}, "N", "most rounds of normal filtering on noisy meshes",
          [](Options& o, In in) {
            require(in.integer >= 0 && in.integer <= 1000,
                    in.name + " must be an integer in 0 .. 1000 (got '" + in.got + "')");

@@ -228,6 +228,71 @@ BOOST_AUTO_TEST_CASE(two_faces_isolated_by_creases_join_their_flattest_neighbour
   BOOST_TEST(chamfer_creases == 3u);
 }
 
+// On a rough mesh a piece of up to ten faces cut out by creases joins the neighbour it
+// bends least from, whatever the bend (noise cuts such pieces out far more often than a
+// part's faces do); on a clean one only pieces of one or two faces do. A 6 x 6 grid of a
+// square with the creases around a block of 2 x 2 cells (8 faces, all 90 degrees but the
+// first edge's 70), then of 2 x 3 cells (12 faces).
+BOOST_AUTO_TEST_CASE(pieces_of_up_to_ten_faces_join_on_a_rough_mesh)
+{
+  const SM m = fs_test::to_mesh<SM>(fs_test::plane(1., 6));
+  const FS::internal::Mesh_indexing<SM> idx(m);
+  for(const double top : { 1. / 3, 2. / 3 })
+  {
+    auto inside = [&](std::size_t f) {
+      double x = 0, y = 0;
+      for(auto v : CGAL::vertices_around_face(halfedge(idx.face_at(f), m), m))
+      {
+        x += m.point(v).x() / 3;
+        y += m.point(v).y() / 3;
+      }
+      return std::abs(x) < 1. / 3 && y > -1. / 3 && y < top;
+    };
+    std::vector<char> is_crease(idx.number_of_edges(), 0);
+    std::vector<double> angle(idx.number_of_edges(), 0.);
+    std::size_t first = idx.npos, creases = 0;
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    {
+      const auto h = halfedge(idx.edge_at(e), m);
+      const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, m));
+      if(f == idx.npos || g == idx.npos || inside(f) == inside(g)) continue;
+      is_crease[e] = 1;
+      angle[e] = first == idx.npos ? 70. : 90.;
+      if(first == idx.npos) first = e;
+      ++creases;
+    }
+    BOOST_REQUIRE(creases == (top < 0.5 ? 8u : 10u));
+    std::vector<char> clean = is_crease;
+    BOOST_TEST(FS::internal::join_isolated_crease_faces(idx, angle, clean) == 0u);
+    std::vector<char> rough = is_crease;
+    const std::size_t cleared = FS::internal::join_isolated_crease_faces(
+      idx, angle, rough, FS::internal::crease_noisy_piece_max_faces, 180.);
+    if(top < 0.5)
+    {
+      BOOST_TEST(cleared == 1u);
+      BOOST_TEST(rough[first] == 0);
+      BOOST_TEST(std::size_t(std::count(rough.begin(), rough.end(), 1)) == creases - 1);
+    }
+    else
+      BOOST_TEST(cleared == 0u);
+  }
+}
+
+// The rounds of filtering a noisy mesh gets: 40 * (roughness / 0.15)^3 rounded up, at
+// least 5 and at most the given number.
+BOOST_AUTO_TEST_CASE(noisy_meshes_get_rounds_growing_with_the_cube_of_their_roughness)
+{
+  using FS::internal::noisy_filter_rounds;
+  BOOST_TEST(noisy_filter_rounds(0.15, 40) == 40);  // the full roughness
+  BOOST_TEST(noisy_filter_rounds(0.3, 40) == 40);   // capped
+  BOOST_TEST(noisy_filter_rounds(0.12, 40) == 21);  // 40 * 0.512 = 20.48
+  BOOST_TEST(noisy_filter_rounds(0.1, 40) == 12);   // 40 * 8 / 27 = 11.85
+  BOOST_TEST(noisy_filter_rounds(0.075, 40) == 5);  // 40 / 8
+  BOOST_TEST(noisy_filter_rounds(0.035, 40) == 5);  // the least
+  BOOST_TEST(noisy_filter_rounds(0.1, 3) == 3);     // the user's fewer rounds
+  BOOST_TEST(noisy_filter_rounds(1e300, 40) == 40); // no overflow
+}
+
 // A face at a border, cut out by the creases of the edges it shares (here its only one),
 // joins its flattest neighbour too: a 4 x 4 grid of a square with a triangle folded up
 // by 60 degrees along one edge of its border is one patch, and that edge no crease.

@@ -88,7 +88,8 @@ namespace Feature_segmentation {
 ///   \cgalParamNBegin{crease_filter_iterations}
 ///     \cgalParamDescription{the rounds of bilateral filtering of the face normals before the creases are
 ///                           found: none on a clean mesh, until the normals are smooth (at most 10 rounds) on
-///                           a smooth model, all on a noisy one; 0: the raw dihedral angles}
+///                           a smooth model, on a noisy one from 5 to all of them as the noise grows; 0: the
+///                           raw dihedral angles}
 ///     \cgalParamType{an integer type, 0 to 1000}
 ///     \cgalParamDefault{`default_crease_filter_iterations` (40)}
 ///     \cgalParamExtra{A value outside 0 to 1000 throws `Invalid_input`.}
