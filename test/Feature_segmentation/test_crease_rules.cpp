@@ -7,6 +7,27 @@
 
 BOOST_AUTO_TEST_SUITE(crease_rules)
 
+namespace {
+
+// The raw face normals of a mesh, what the normal filter reads, and their roughness.
+struct Normal_field
+{
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area;
+  std::vector<std::uint32_t> begin, ring;
+  double roughness = 0;
+
+  explicit Normal_field(const SM& m)
+  {
+    const FS::internal::Mesh_indexing<SM> idx(m);
+    FS::internal::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
+    FS::internal::vertex_adjacent_faces(idx, begin, ring);
+    roughness = FS::internal::normal_roughness(normal, begin, ring);
+  }
+};
+
+} // namespace
+
 BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)
 {
   // every face of a clean box has a neighbour with its own normal: the roughness is 0,
@@ -27,13 +48,8 @@ BOOST_AUTO_TEST_CASE(filter_stops_after_the_round_that_makes_the_normals_smooth)
 {
   std::vector<int> side;
   const SM m = fs_test::to_mesh<SM>(fs_test::noisy_box(0.004, 16, side));
-  FS::internal::Mesh_indexing<SM> idx(m);
-  std::vector<Eigen::Vector3d> normal, centroid;
-  std::vector<double> area;
-  FS::internal::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
-  std::vector<std::uint32_t> begin, ring;
-  FS::internal::vertex_adjacent_faces(idx, begin, ring);
-  const double r0 = FS::internal::normal_roughness(normal, begin, ring);
+  const Normal_field field(m);
+  const auto& [normal, centroid, area, begin, ring, r0] = field;
   const double stop = 0.1 * r0;
   // the rounds needed, one at a time, measured by normal_roughness
   int rounds = 0;
@@ -134,47 +150,83 @@ BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_cad_part_only)
   BOOST_TEST(long_default.patches == long_full.patches);
 }
 
-// A noisy tessellation is not clean, and has no exactly planar region to tell a CAD part
-// by; its creases, found on the filtered normals, still cut it into its faces. A rod of
-// length 4 and radius 1 (48 facets round, 16 rings along), every vertex inside its side
-// moved radially by a seeded uniform amount of up to 3% of the radius (0.6% of the
-// diagonal; the end rings stay, so the ends keep their 90-degree creases): its creases
-// are the two end rings, which cut it into the side (80% of the area: 8 pi against pi
-// for each end) and the two ends, so it is a CAD part and its crest lines, which the
-// noise strews along the side, weigh 0.6 - 0.5 (0.6 with
-// crest_lines_on_clean_tessellations(true)). Either way the side is one patch.
-BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_noisy_cad_part)
+namespace {
+
+// A rod of radius 1 and the given length (48 facets round, 4 rings per unit of length),
+// every vertex inside its side moved radially by a seeded uniform amount of up to 3% of
+// the radius (the end rings stay, so the ends keep their 90-degree creases).
+SM noisy_rod(double length, std::vector<int>& side)
 {
-  std::vector<int> side;
-  fs_test::Soup s = fs_test::closed_rod([](double, double) { return 1.; }, 4., 48, 16, side);
+  fs_test::Soup s = fs_test::closed_rod([](double, double) { return 1.; }, length, 48, int(4 * length), side);
   unsigned long long state = 2024;
   for(std::size_t v = 0; v + 2 < s.points.size(); ++v) // not the two centres of the ends
   {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     const double u = double(state >> 11) / double(1ULL << 53); // [0, 1)
-    if(!(s.points[v][2] > 0. && s.points[v][2] < 4.)) continue;
+    if(!(s.points[v][2] > 0. && s.points[v][2] < length)) continue;
     const double f = 1. + 0.03 * (2 * u - 1);
     s.points[v][0] *= f;
     s.points[v][1] *= f;
   }
-  const SM m = fs_test::to_mesh<SM>(s);
+  return fs_test::to_mesh<SM>(s);
+}
+
+// The least and the most alpha_e of the crest-line edges (feature edges that are no
+// creases) of `seg`; the least is above the most if there are none.
+std::pair<double, double> crest_alphas(const SM& m, const FS::Feature_aligned_segmentation<SM>& seg)
+{
+  double least = 1e300, most = -1e300;
+  for(auto e : edges(m))
+    if(seg.is_feature_edge(e) && !seg.is_crease_edge(e))
+    {
+      least = (std::min)(least, seg.alpha(e));
+      most = (std::max)(most, seg.alpha(e));
+    }
+  return { least, most };
+}
+
+} // namespace
+
+// A noisy tessellation is not clean, and has no exactly planar region to tell a CAD part
+// by; its creases, found on the filtered normals, still cut it into its faces. The noisy
+// rod of length 4 (noise of 0.6% of the diagonal): its creases are the two end rings,
+// which cut it into the side (80% of the area: 8 pi against pi for each end) and the two
+// ends; its crest lines, which the noise strews along the side, weigh 0.6 - 0.5 (0.6
+// with crest_lines_on_clean_tessellations(true)). Either way the side is one patch.
+BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_noisy_cad_part)
+{
+  std::vector<int> side;
+  const SM m = noisy_rod(4., side);
   for(bool full_alpha : {false, true})
   {
     FS::Feature_aligned_segmentation<SM> seg(m, FS::parameters::crest_lines_on_clean_tessellations(full_alpha));
     BOOST_TEST(seg.number_of_crease_edges() == 96u);
-    double least = 1e300, most = -1e300;
-    for(auto e : edges(m))
-      if(seg.is_feature_edge(e) && !seg.is_crease_edge(e))
-      {
-        least = (std::min)(least, seg.alpha(e));
-        most = (std::max)(most, seg.alpha(e));
-      }
+    const auto [least, most] = crest_alphas(m, seg);
     BOOST_TEST(least <= most); // it has crest lines
     BOOST_TEST(least == (full_alpha ? 0.6 : 0.1), boost::test_tools::tolerance(1e-12));
     BOOST_TEST(most == (full_alpha ? 0.6 : 0.1), boost::test_tools::tolerance(1e-12));
     BOOST_TEST(seg.number_of_patches() == 3u);
     BOOST_TEST(fs_test::patches_are_sides(m, seg, side, 3));
   }
+}
+
+// On a noisy mesh the crest lines weigh less even where the creases cut nothing apart:
+// the noisy rod of length 40 (its side 97.6% of the area: 80 pi against pi for each end)
+// is noisy (raw roughness above Crease_gap::raw_roughness), so its crest lines along the
+// side weigh 0.6 - 0.5 and the side is one patch.
+BOOST_AUTO_TEST_CASE(crest_lines_weigh_less_on_a_noisy_mesh_its_creases_do_not_cut)
+{
+  std::vector<int> side;
+  const SM m = noisy_rod(40., side);
+  BOOST_TEST_REQUIRE(Normal_field(m).roughness > FS::internal::Crease_gap::raw_roughness);
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  BOOST_TEST(seg.number_of_crease_edges() == 96u);
+  const auto [least, most] = crest_alphas(m, seg);
+  BOOST_TEST(least <= most); // it has crest lines
+  BOOST_TEST(least == 0.1, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(most == 0.1, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(seg.number_of_patches() == 3u);
+  BOOST_TEST(fs_test::patches_are_sides(m, seg, side, 3));
 }
 
 // A face cut out alone by its three creases is no patch of its own: it joins the side it

@@ -8,8 +8,9 @@
 // fewer than three triangles, while the creases of ABC 00000026 cut out 249 quads of a
 // narrow fillet). So few faces are no evidence of a surface of their own: they stay
 // with the neighbour they bend least from, unless they are a quad bent strongly from
-// every neighbour (a box's side). On a noisy mesh, pieces of up to ten faces are cut out
-// by noise far more often than by the part, and join whatever their bend.
+// every neighbour (a box's side). On a rough mesh (not a clean tessellation: noisy, or
+// a smooth model), pieces of up to ten faces are cut out by noise far more often than
+// by the part, and join whatever their bend.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_ISOLATED_CREASE_FACES_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_ISOLATED_CREASE_FACES_H
@@ -35,12 +36,13 @@ namespace internal {
 constexpr std::size_t crease_piece_max_faces = 2;
 constexpr double crease_piece_max_angle = 60.;
 
-// The same on a rough (noisy) mesh, where most small pieces are cut out by noise that
-// survived the normal filter: pieces of up to 10 faces join their flattest neighbour
-// whatever the angle (called with max_angle 180). On the 30 development parts with
-// noise along the normals of 0.1% and 0.3% of the diagonal this removes two thirds of
-// the surplus patches and raises the mean boundary F at 0.3% by 0.007 (30 faces: the
-// same F; a 60-degree bound: half the gain).
+// The same on a rough mesh (not a clean tessellation), where most small pieces are cut
+// out by noise that survived the normal filter: pieces of up to 10 faces join their
+// flattest neighbour whatever the angle (called with max_angle 180). On the 30
+// development parts with noise along the normals of 0.1% and 0.3% of the diagonal this
+// removes two thirds of the surplus patches and raises the mean boundary F at 0.3% by
+// 0.007 (30 faces: the same F; a 60-degree bound: half the gain); the paper's smooth
+// models are unchanged.
 constexpr std::size_t crease_noisy_piece_max_faces = 10;
 
 // Joins the pieces that the creases (nonzero in `is_crease`) would cut out of the mesh of
