@@ -104,8 +104,9 @@ namespace Feature_segmentation {
 ///   \cgalParamNEnd
 ///
 ///   \cgalParamNBegin{crest_lines_on_clean_tessellations}
-///     \cgalParamDescription{whether the crest lines of a tessellation of a CAD part (a clean one, or one its
-///                           creases cut into pieces) get the full \f$ \alpha \f$ (the paper's features); if
+///     \cgalParamDescription{whether the crest lines of a tessellation of a CAD part (a clean one, a noisy
+///                           one, or one its creases cut into pieces) get the full \f$ \alpha \f$ (the
+///                           paper's features); if
 ///                           not, their \f$ \alpha_e \f$ is \f$ \alpha \f$ minus 0.5, so that the creases and
 ///                           the curvature discontinuities bound the patches}
 ///     \cgalParamType{`bool`}
