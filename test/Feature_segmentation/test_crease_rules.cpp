@@ -185,6 +185,21 @@ std::pair<double, double> crest_alphas(const SM& m, const FS::Feature_aligned_se
   return { least, most };
 }
 
+// The crease edges of `seg` between a face of side `label` and a face of another side.
+std::size_t creases_around(const SM& m, const FS::Feature_aligned_segmentation<SM>& seg,
+                           const std::vector<int>& side, int label)
+{
+  std::size_t n = 0;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    if(is_border_edge(h, m)) continue;
+    const int a = side[face(h, m).idx()], b = side[face(opposite(h, m), m).idx()];
+    if((a == label) != (b == label) && seg.is_crease_edge(e)) ++n;
+  }
+  return n;
+}
+
 } // namespace
 
 // A noisy tessellation is not clean, and has no exactly planar region to tell a CAD part
@@ -242,14 +257,7 @@ BOOST_AUTO_TEST_CASE(a_face_isolated_by_creases_joins_its_flattest_neighbour)
   BOOST_TEST(seg.number_of_patches() == 6u);
   BOOST_TEST(fs_test::patches_are_sides(m, seg, joined, 6));
   // the two creases of 65.9 degrees stay, the one of 35.3 is cleared
-  std::size_t triangle_creases = 0;
-  for(auto e : edges(m))
-  {
-    const auto h = halfedge(e, m);
-    const bool on_triangle = side[face(h, m).idx()] == 6 || side[face(opposite(h, m), m).idx()] == 6;
-    if(on_triangle && seg.is_crease_edge(e)) ++triangle_creases;
-  }
-  BOOST_TEST(triangle_creases == 2u);
+  BOOST_TEST(creases_around(m, seg, side, 6) == 2u);
 }
 
 // Two faces cut out together by their creases (a chamfer quad of two triangles) are no
@@ -270,14 +278,7 @@ BOOST_AUTO_TEST_CASE(two_faces_isolated_by_creases_join_their_flattest_neighbour
   BOOST_TEST(fs_test::patches_are_sides(m, seg, joined, 6));
   // the chamfer keeps its creases of 63.4 and 90 degrees (to x=1: 1 edge; to z=0 and
   // z=1: 1 edge each); the one of 26.6 to y=1 is cleared
-  std::size_t chamfer_creases = 0;
-  for(auto e : edges(m))
-  {
-    const auto h = halfedge(e, m);
-    const int a = side[face(h, m).idx()], b = side[face(opposite(h, m), m).idx()];
-    if((a == 6) != (b == 6) && seg.is_crease_edge(e)) ++chamfer_creases;
-  }
-  BOOST_TEST(chamfer_creases == 3u);
+  BOOST_TEST(creases_around(m, seg, side, 6) == 3u);
 }
 
 // On a rough mesh a piece of up to ten faces cut out by creases joins the neighbour it

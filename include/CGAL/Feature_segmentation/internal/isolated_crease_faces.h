@@ -16,7 +16,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_ISOLATED_CREASE_FACES_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
-
+#include <CGAL/Feature_segmentation/internal/face_components.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -63,34 +63,14 @@ std::size_t join_isolated_crease_faces(const Mesh_indexing<TriangleMesh>& idx, c
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces();
   std::size_t cleared = 0;
-  std::vector<std::size_t> piece(nf), size, stack, weakest;
+  std::vector<std::size_t> piece, size, weakest;
   for(bool changed = true; changed;)
   {
     changed = false;
-    // the pieces, numbered in the order of their first face
-    std::fill(piece.begin(), piece.end(), idx.npos);
-    size.clear();
-    for(std::size_t f0 = 0; f0 < nf; ++f0)
-    {
-      if(piece[f0] != idx.npos) continue;
-      const std::size_t id = size.size();
-      size.push_back(0);
-      piece[f0] = id;
-      stack.assign(1, f0);
-      while(!stack.empty())
-      {
-        const std::size_t f = stack.back();
-        stack.pop_back();
-        ++size[id];
-        for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-        {
-          const std::size_t g = idx.face_id(opposite(h, tm));
-          if(g == idx.npos || is_crease[idx.edge_id(h)] || piece[g] != idx.npos) continue;
-          piece[g] = id;
-          stack.push_back(g);
-        }
-      }
-    }
+    // the pieces, each named by its first face
+    piece = face_components(idx, [&](std::size_t e) { return !is_crease[e]; });
+    size.assign(nf, 0);
+    for(std::size_t f = 0; f < nf; ++f) ++size[piece[f]];
     // the weakest boundary crease of every small piece
     weakest.assign(size.size(), idx.npos);
     for(std::size_t f = 0; f < nf; ++f)
