@@ -19,7 +19,8 @@
 //     mesh     uint32 vertices V, uint32 triangles T, float64 diagonal, float32 x y z per
 //              vertex, uint32 i j k per triangle (16 + 12 V + 12 T bytes)
 //     labels   uint32 patches, uint32 T, uint32 V, uint32 0, uint32 patch per triangle,
-//              uint32 patch per vertex (16 + 4 T + 4 V bytes)
+//              uint32 patch per vertex (16 + 4 T + 4 V bytes); with &vertices=0, V is 0
+//              and the triangles' patches end it (what the page loads)
 //   history    ?from=K&count=N (N in 1 .. 1000): {"edit_count", "from", "edits": [lines]}
 //   features   {"ridges", "valleys", "user": [[x y z ...] per line], "creases": [x y z x y z
 //               per crease edge ...]}
@@ -46,6 +47,7 @@
 
 #include <CGAL/Feature_segmentation/Feature_aligned_segmentation.h>
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
 #include <nlohmann/json.hpp>
 
@@ -156,18 +158,28 @@ public:
     return nlohmann::json{{"patches", patches}, {"face_patches", faces}, {"vertex_patches", vertices}}.dump();
   }
 
-  /// GET /api/labels?format=binary (the layout is at the top of this file).
-  std::string labels_binary() const
+  /// GET /api/labels?format=binary (the layout is at the top of this file); with
+  /// `vertices` false (?vertices=0, what the page loads), V is 0 and no vertex follows.
+  /// The faces' patches are computed by the threads of the run, each face on its own
+  /// (`patch(face_descriptor)`), so the bytes are the same at any thread count.
+  std::string labels_binary(bool vertices = true) const
   {
-    std::vector<std::size_t> faces, vertices;
-    const std::size_t patches = label_arrays(faces, vertices);
-    internal::Little_endian_bytes out(16 + 4 * (faces.size() + vertices.size()));
-    out.u32(patches);
-    out.u32(faces.size());
-    out.u32(vertices.size());
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const Mesh& m = m_run->pipeline.mesh;
+    const auto& seg = *m_run->pipeline.segmentation;
+    const std::size_t nt = m_triangles.size(), nv = vertices ? std::size_t(m.number_of_vertices()) : 0;
+    internal::Little_endian_bytes out(16 + 4 * (nt + nv));
+    out.u32(seg.number_of_patches());
+    out.u32(nt);
+    out.u32(nv);
     out.u32(0);
-    for(std::size_t p : faces) out.u32(p);
-    for(std::size_t p : vertices) out.u32(p);
+    char* const faces = out.u32_block(nt);
+    FS::internal::for_each_range(nt, true, 16384, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i)
+        internal::Little_endian_bytes::write_u32(faces + 4 * i, std::uint32_t(seg.patch(m_triangles[i])));
+    });
+    if(vertices)
+      for(Mesh::Vertex_index v : m.vertices()) out.u32(seg.patch(v));
     return out.take();
   }
 

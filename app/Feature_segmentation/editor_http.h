@@ -329,8 +329,12 @@ inline Http_answer answer_request(const http::request<http::string_body>& req, E
         if(value != "json" && value != "binary")
           return error_answer(http::status::bad_request, path.substr(5) + ": 'format' must be json or binary");
         const bool mesh = path == "/api/mesh";
+        const auto vertices = query->find("vertices");
+        if(vertices != query->end() && (mesh || value != "binary" || (vertices->second != "0" && vertices->second != "1")))
+          return error_answer(http::status::bad_request, "'vertices' is 0 or 1, on labels?format=binary only");
         if(value == "json") return json_answer(mesh ? session.mesh() : session.labels());
-        return Http_answer{http::status::ok, mesh ? session.mesh_binary() : session.labels_binary(),
+        const bool with_vertices = vertices == query->end() || vertices->second == "1";
+        return Http_answer{http::status::ok, mesh ? session.mesh_binary() : session.labels_binary(with_vertices),
                            "application/octet-stream", false};
       }
       if(path == "/api/features") return json_answer(session.features());

@@ -190,6 +190,15 @@ try {
         bl.buffer.byteLength === 16 + 4 * (ref.faces + ref.vertices) && blHeader.getUint32(0, true) === ref.patches &&
         blHeader.getUint32(4, true) === ref.faces && blHeader.getUint32(8, true) === ref.vertices &&
         l0.face_patches.every((p, i) => blFaces[i] === p) && l0.vertex_patches.every((p, i) => blVertices[i] === p));
+  const bf = await bytes('api/labels?format=binary&vertices=0');
+  const bfHeader = new DataView(bf.buffer);
+  check('binary labels with vertices=0: V = 0 and the same patch of every triangle, nothing after',
+        bf.buffer.byteLength === 16 + 4 * ref.faces && bfHeader.getUint32(0, true) === ref.patches &&
+        bfHeader.getUint32(4, true) === ref.faces && bfHeader.getUint32(8, true) === 0 &&
+        new Uint32Array(bf.buffer, 16, ref.faces).every((p, i) => p === blFaces[i]), `${bf.buffer.byteLength} bytes`);
+  check('labels: vertices=2, and vertices on JSON labels or on the mesh, are refused',
+        (await get('api/labels?format=binary&vertices=2')).status === 400 &&
+        (await get('api/labels?vertices=0')).status === 400 && (await get('api/mesh?format=binary&vertices=0')).status === 400);
   check('mesh: format=xml is refused', (await get('api/mesh?format=xml')).status === 400);
   const features = (await get('api/features')).body;
   check(`features: crease segments (6 numbers each) for the ${ref.crease_edges} crease edges`,
