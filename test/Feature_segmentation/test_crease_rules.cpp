@@ -5,6 +5,8 @@
 
 #include "crease_meshes.h"
 
+#include <CGAL/boost/graph/Euler_operations.h>
+
 BOOST_AUTO_TEST_SUITE(crease_rules)
 
 namespace {
@@ -27,6 +29,49 @@ struct Normal_field
 };
 
 } // namespace
+
+BOOST_AUTO_TEST_CASE(face_rings_are_the_faces_sharing_a_vertex)
+{
+  // against a search over all pairs of faces, in increasing order, on a closed box and
+  // on a disc with a border (the box without its top); and the same normals and angles
+  // by two threads as by one
+  std::vector<int> side;
+  SM box = fs_test::to_mesh<SM>(fs_test::box(1., 2., 0.5, 4, side));
+  SM open = box;
+  for(auto f : faces(box))
+    if(side[f.idx()] == 5) CGAL::Euler::remove_face(halfedge(SM::Face_index(f.idx()), open), open);
+  open.collect_garbage();
+  BOOST_TEST(!CGAL::is_closed(open));
+  for(const SM* m : { &box, &open })
+  {
+    const FS::internal::Mesh_indexing<SM> idx(*m);
+    std::vector<std::uint32_t> begin, ring;
+    FS::internal::vertex_adjacent_faces(idx, begin, ring);
+    const std::size_t nf = idx.number_of_faces();
+    BOOST_TEST_REQUIRE(begin.size() == nf + 1);
+    std::vector<std::set<std::size_t> > corners(nf);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(auto v : CGAL::vertices_around_face(halfedge(idx.face_at(f), *m), *m)) corners[f].insert(idx.id(v));
+    std::size_t wrong = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      std::vector<std::uint32_t> expected;
+      for(std::size_t g = 0; g < nf; ++g)
+        if(std::any_of(corners[g].begin(), corners[g].end(), [&](std::size_t v) { return corners[f].count(v) > 0; }))
+          expected.push_back(std::uint32_t(g));
+      if(!std::equal(expected.begin(), expected.end(), ring.begin() + begin[f], ring.begin() + begin[f + 1]) ||
+         expected.size() != begin[f + 1] - begin[f])
+        ++wrong;
+    }
+    BOOST_TEST(wrong == 0u);
+    std::vector<Eigen::Vector3d> n1, c1, n2, c2;
+    std::vector<double> a1, a2;
+    FS::internal::face_geometry(idx, get(CGAL::vertex_point, *m), n1, a1, c1, false);
+    FS::internal::face_geometry(idx, get(CGAL::vertex_point, *m), n2, a2, c2, true);
+    BOOST_TEST((n1 == n2 && a1 == a2 && c1 == c2));
+    BOOST_TEST((FS::internal::dihedral_angles(idx, n1, false) == FS::internal::dihedral_angles(idx, n1, true)));
+  }
+}
 
 BOOST_AUTO_TEST_CASE(clean_box_is_not_filtered)
 {

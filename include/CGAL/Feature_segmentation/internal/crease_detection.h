@@ -32,54 +32,93 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// Unit face normals (zero for a degenerate face), face areas and centroids.
+// Unit face normals (zero for a degenerate face), face areas and centroids; by TBB's
+// threads if `parallel` (each face on its own: the same at any count).
 template <typename TriangleMesh, typename VPM>
 void face_geometry(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, std::vector<Eigen::Vector3d>& normal,
-                   std::vector<double>& area, std::vector<Eigen::Vector3d>& centroid)
+                   std::vector<double>& area, std::vector<Eigen::Vector3d>& centroid, bool parallel = false)
 {
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces();
   normal.assign(nf, Eigen::Vector3d::Zero());
   area.assign(nf, 0.);
   centroid.assign(nf, Eigen::Vector3d::Zero());
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    std::array<Eigen::Vector3d, 3> p = { Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero() };
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+  for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
     {
-      const auto& q = get(vpm, target(h, tm));
-      p[k++] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-      if(k == 3) break;
+      std::array<Eigen::Vector3d, 3> p = { Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero() };
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+      {
+        const auto& q = get(vpm, target(h, tm));
+        p[k++] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+        if(k == 3) break;
+      }
+      centroid[f] = (p[0] + p[1] + p[2]) / 3.;
+      const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
+      const double len = n.norm();
+      if(len > 0 && std::isfinite(len)) { normal[f] = n / len; area[f] = 0.5 * len; }
     }
-    centroid[f] = (p[0] + p[1] + p[2]) / 3.;
-    const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
-    const double len = n.norm();
-    if(len > 0 && std::isfinite(len)) { normal[f] = n / len; area[f] = 0.5 * len; }
-  }
+  });
 }
 
 // The faces that share a vertex with each face (itself included), as offsets into one
-// array (CSR), in a deterministic order; 32-bit ids (13 per face on a regular mesh).
+// array (CSR), in increasing order; 32-bit ids (13 per face on a regular mesh). Made from
+// the faces of every vertex (listed in increasing order by one pass over the faces): each
+// face's ring merges the sorted lists of its three vertices.
 template <typename TriangleMesh>
 void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<std::uint32_t>& begin,
                            std::vector<std::uint32_t>& faces)
 {
   const TriangleMesh& tm = idx.mesh();
-  const std::size_t nf = idx.number_of_faces();
+  const std::size_t nf = idx.number_of_faces(), nv = idx.number_of_vertices();
+  if(3 * nf >= std::size_t(UINT32_MAX) || nv >= std::size_t(UINT32_MAX))
+    throw std::length_error("the mesh has too many faces for the crease detection's 32-bit face rings");
+  // the corners of every face, then the faces of every vertex (CSR)
+  std::vector<std::uint32_t> corner(3 * nf, std::uint32_t(-1)), vertex_begin(nv + 1, 0);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      const std::uint32_t v = std::uint32_t(idx.id(target(h, tm)));
+      corner[3 * f + k] = v;
+      ++vertex_begin[v + 1];
+      if(++k == 3) break;
+    }
+  }
+  for(std::size_t v = 0; v < nv; ++v) vertex_begin[v + 1] += vertex_begin[v];
+  std::vector<std::uint32_t> vertex_faces(vertex_begin[nv]);
+  {
+    std::vector<std::uint32_t> fill(vertex_begin.begin(), vertex_begin.end() - 1);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3; ++k)
+        if(corner[3 * f + k] != std::uint32_t(-1)) vertex_faces[fill[corner[3 * f + k]]++] = std::uint32_t(f);
+  }
   begin.assign(nf + 1, 0);
   faces.clear();
   faces.reserve(13 * nf + 1);
-  std::vector<std::uint32_t> ring;
   for(std::size_t f = 0; f < nf; ++f)
   {
-    ring.clear();
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-      for(auto g : CGAL::faces_around_target(h, tm))
-        if(g != boost::graph_traits<TriangleMesh>::null_face()) ring.push_back(std::uint32_t(idx.id(g)));
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    faces.insert(faces.end(), ring.begin(), ring.end());
+    // merge the three sorted lists, dropping repeats
+    const std::uint32_t* at[3];
+    const std::uint32_t* end[3];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t v = corner[3 * f + k];
+      at[k] = v == std::uint32_t(-1) ? nullptr : vertex_faces.data() + vertex_begin[v];
+      end[k] = v == std::uint32_t(-1) ? nullptr : vertex_faces.data() + vertex_begin[v + 1];
+    }
+    for(;;)
+    {
+      std::uint32_t least = std::uint32_t(-1);
+      for(int k = 0; k < 3; ++k)
+        if(at[k] != end[k] && *at[k] < least) least = *at[k];
+      if(least == std::uint32_t(-1)) break;
+      faces.push_back(least);
+      for(int k = 0; k < 3; ++k)
+        if(at[k] != end[k] && *at[k] == least) ++at[k];
+    }
     if(faces.size() >= std::size_t(UINT32_MAX))
       throw std::length_error("the mesh has too many faces for the crease detection's 32-bit face rings");
     begin[f + 1] = std::uint32_t(faces.size());
@@ -199,21 +238,24 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
 }
 
 // The angle between the normals of the two faces of every edge, in degrees (0 for a
-// border edge or next to a degenerate face).
+// border edge or next to a degenerate face); by TBB's threads if `parallel`.
 template <typename TriangleMesh>
-std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal)
+std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal,
+                                    bool parallel = false)
 {
   const TriangleMesh& tm = idx.mesh();
   std::vector<double> angle(idx.number_of_edges(), 0.);
-  for(std::size_t e = 0; e < angle.size(); ++e)
-  {
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
-    if(f == idx.npos || g == idx.npos) continue;
-    if(normal[f].squaredNorm() == 0 || normal[g].squaredNorm() == 0) continue;
-    const double c = (std::max)(-1., (std::min)(1., normal[f].dot(normal[g])));
-    angle[e] = std::acos(c) * 180. / 3.14159265358979323846;
-  }
+  for_each_range(angle.size(), parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t e = first; e < last; ++e)
+    {
+      const auto h = halfedge(idx.edge_at(e), tm);
+      const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
+      if(f == idx.npos || g == idx.npos) continue;
+      if(normal[f].squaredNorm() == 0 || normal[g].squaredNorm() == 0) continue;
+      const double c = (std::max)(-1., (std::min)(1., normal[f].dot(normal[g])));
+      angle[e] = std::acos(c) * 180. / 3.14159265358979323846;
+    }
+  });
   return angle;
 }
 
@@ -266,10 +308,10 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
 {
   std::vector<Eigen::Vector3d> normal, centroid;
   std::vector<double> area;
-  face_geometry(idx, vpm, normal, area, centroid);
+  face_geometry(idx, vpm, normal, area, centroid, parallel);
   std::vector<std::uint32_t> begin, ring;
   vertex_adjacent_faces(idx, begin, ring);
-  const std::vector<double> raw = dihedral_angles(idx, normal);
+  const std::vector<double> raw = dihedral_angles(idx, normal, parallel);
   const double raw_roughness = normal_roughness(normal, begin, ring);
   clean = raw_roughness <= crease_filter_roughness;
   // A clean tessellation is not filtered. A smooth model (raw roughness up to
@@ -283,7 +325,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
             ? dihedral_angles(idx, filter_face_normals(normal, raw_roughness, area, centroid, begin, ring,
                                                        stop > 0 ? (std::min)(filter_iterations, crease_smooth_filter_iterations)
                                                                 : noisy_filter_rounds(raw_roughness, filter_iterations),
-                                                       crease_filter_sigma_r, stop, parallel))
+                                                       crease_filter_sigma_r, stop, parallel), parallel)
             : raw;
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
