@@ -128,6 +128,71 @@ BOOST_AUTO_TEST_CASE(clusters_give_the_lengths_of_the_face_search_on_fandisk)
   check_hierarchy_against_faces(m, candidates, 20., 2);
 }
 
+// The searches of keep_creases_with_gap() end once their verdict is sure (AABB bounds on
+// the lengths within each ball); the verdicts must be those of the whole searches: on
+// fandisk subdivided once (its creases pass) and on a coarse tube of 20 facets round,
+// which bend by 18 degrees (the band), but for one line pushed out to bend by 29 (its
+// candidates fail).
+BOOST_AUTO_TEST_CASE(searches_end_once_their_verdict_is_sure)
+{
+  std::vector<Epick::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_soup(std::string(FS_MESH_DIR) + "/fandisk.off", points, polygons));
+  fs_test::Soup s;
+  for(const auto& p : points) s.points.push_back({ p.x(), p.y(), p.z() });
+  s.faces = polygons;
+  fs_test::subdivide_flat(s);
+  const SM fandisk = fs_test::to_mesh<SM>(s);
+  const SM tube = fs_test::to_mesh<SM>(fs_test::parametric_grid(20, 4, true, false, [](double u, double v) {
+    const double a = 2 * 3.14159265358979323846 * u, r = u < 1e-9 ? 1.03 : 1.;
+    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), 4 * v };
+  }));
+  std::size_t total_kept = 0, total_dropped = 0, total_early = 0;
+  for(const SM* m : { &fandisk, &tube })
+  {
+    const Indexing idx(*m);
+    const std::vector<double> angle = raw_angles(idx, *m);
+    const auto vpm = get(CGAL::vertex_point, *m);
+    const FS::internal::Edge_geometry geometry = FS::internal::edge_geometry(idx, vpm);
+    std::vector<std::size_t> candidates;
+    std::vector<char> is_crease(angle.size(), 0);
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+      if(angle[e] >= 20) { candidates.push_back(e); is_crease[e] = 1; }
+    const auto full = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false);
+    const auto bound = FS::internal::crease_gap_length_bounds(geometry, angle, angle, 20., candidates);
+    std::size_t below_bound = 0, early = 0;
+    for(std::size_t i = 0; i < candidates.size(); ++i)
+    {
+      const double tol = 1e-9 * (1 + bound[i].crease + bound[i].band);
+      below_bound += full[i].crease <= bound[i].crease + tol && full[i].band <= bound[i].band + tol;
+    }
+    BOOST_TEST(below_bound == candidates.size());
+    // the searches that end early find less than the whole search
+    const auto partial = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false, 8,
+                                                          [&](std::size_t i) {
+      const FS::internal::Gap_lengths b = bound[i];
+      return [b](const FS::internal::Gap_lengths& l) {
+        return l.band > 0.5 * b.crease * (1 + 1e-9) || b.band * (1 + 1e-9) < 0.5 * l.crease;
+      };
+    });
+    for(std::size_t i = 0; i < candidates.size(); ++i)
+      early += partial[i].crease + partial[i].band < full[i].crease + full[i].band;
+    FS::internal::keep_creases_with_gap(idx, vpm, angle, angle, 0., 20., is_crease, false);
+    std::size_t wrong = 0;
+    for(std::size_t i = 0; i < candidates.size(); ++i)
+    {
+      const bool drop = full[i].band > FS::internal::Crease_gap::ratio * full[i].crease;
+      wrong += (is_crease[candidates[i]] != 0) == drop;
+      (drop ? total_dropped : total_kept) += 1;
+    }
+    BOOST_TEST(wrong == 0u);
+    total_early += early;
+  }
+  BOOST_TEST(total_kept > 0u);
+  BOOST_TEST(total_dropped > 0u);
+  BOOST_TEST(total_early > 0u);
+}
+
 // A zero-length edge, which the face search does not cross: a grid folded by 30 degrees
 // (creases) along u = 0.5 and by 16 degrees (the band) along v = 0.7, one of whose
 // interior vertices is moved onto its neighbour.

@@ -91,6 +91,19 @@ double crease_gap_ball_radius(const std::vector<Point>& points, const std::vecto
   return (std::max)(Crease_gap::radius * (hi - lo).norm(), 2 * mean_edge);
 }
 
+// The length of the part of segment [a, b] inside the ball of radius r around c: lengths
+// of curves within a ball, the same on a mesh and on its flat subdivision.
+inline double length_in_ball(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double r)
+{
+  const Eigen::Vector3d d = b - a, m = a - c;
+  const double aa = d.squaredNorm(), bb = m.dot(d), k = m.squaredNorm() - r * r;
+  const double disc = bb * bb - aa * k;
+  if(aa == 0 || disc <= 0) return 0.;
+  const double root = std::sqrt(disc);
+  const double t0 = (std::max)(0., (-bb - root) / aa), t1 = (std::min)(1., (-bb + root) / aa);
+  return t1 > t0 ? (t1 - t0) * std::sqrt(aa) : 0.;
+}
+
 // What the gap test reads of the mesh's geometry, made once: the vertices' positions
 // and every edge's two vertices (32-bit ids).
 struct Edge_geometry
@@ -209,6 +222,14 @@ public:
   // work space) around the midpoint of edge `e`, from its faces.
   Gap_lengths lengths(std::size_t e, std::size_t search_number, Work_space& ws) const
   {
+    return lengths(e, search_number, ws, [](const Gap_lengths&) { return false; });
+  }
+
+  // The same, ending as soon as `stop` holds for the lengths added so far (read after
+  // each addition; the sums only grow): the lengths then are those added so far.
+  template <typename Stop>
+  Gap_lengths lengths(std::size_t e, std::size_t search_number, Work_space& ws, const Stop& stop) const
+  {
     CGAL_precondition(search_number < std::size_t(none));
     const Index stamp = Index(search_number);
     prepare(ws);
@@ -253,6 +274,7 @@ public:
         const Level& L = m_levels[l];
         sum.crease += L.lengths[cluster].crease;
         sum.band += L.lengths[cluster].band;
+        if(stop(sum)) return sum;
         for(std::size_t g = L.group_begin[cluster]; g < L.group_begin[cluster + 1]; ++g)
         {
           const std::size_t first = L.groups[g].second,
@@ -288,7 +310,11 @@ public:
         if(in <= 0) continue;
         Index owner_cluster;
         // counted here unless its cluster is taken whole (most edges count for nothing)
-        if(counts(ye) && whole(m_owner[ye], owner_cluster) < 0) add(ye, in, sum);
+        if(counts(ye) && whole(m_owner[ye], owner_cluster) < 0)
+        {
+          add(ye, in, sum);
+          if(stop(sum)) return sum;
+        }
         if(y == none || ws.face_stamp[y] == stamp) continue;
         ws.face_stamp[y] = stamp;
         ws.queue.push_back(y);
@@ -305,13 +331,7 @@ private:
 
   double length_inside(std::size_t x, const Eigen::Vector3d& c) const
   {
-    const Eigen::Vector3d d = end1(x) - end0(x), m = end0(x) - c;
-    const double a = d.squaredNorm(), b = m.dot(d), k = m.squaredNorm() - m_radius * m_radius;
-    const double disc = b * b - a * k;
-    if(a == 0 || disc <= 0) return 0.;
-    const double root = std::sqrt(disc);
-    const double t0 = (std::max)(0., (-b - root) / a), t1 = (std::min)(1., (-b + root) / a);
-    return t1 > t0 ? (t1 - t0) * std::sqrt(a) : 0.;
+    return length_in_ball(end0(x), end1(x), c, m_radius);
   }
 
   bool counts(std::size_t x) const { return m_kind[x] != OTHER; }

@@ -14,6 +14,7 @@
 #endif
 
 #include <algorithm>
+#include <iterator>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -23,19 +24,20 @@ namespace Feature_segmentation {
 namespace internal {
 
 // The gap test's lengths for every edge of `candidates` (by TBB's threads if
-// `parallel`, with the same result at any count); `max_levels` as Crease_gap_search's.
-template <typename TriangleMesh>
+// `parallel`, with the same result at any count); `max_levels` as Crease_gap_search's;
+// the search of candidate i ends once `stop_of(i)` holds for its lengths so far.
+template <typename TriangleMesh, typename StopOf>
 std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry,
                                             const std::vector<double>& angle, const std::vector<double>& band_angle,
                                             double crease_angle, const std::vector<std::size_t>& candidates,
-                                            bool parallel = false, int max_levels = 8)
+                                            bool parallel, int max_levels, const StopOf& stop_of)
 {
   std::vector<Gap_lengths> out(candidates.size());
   if(candidates.empty()) return out;
   typedef Crease_gap_search<TriangleMesh> Search;
   const Search search(idx, std::move(geometry), angle, band_angle, crease_angle, max_levels);
   auto run = [&](std::size_t first, std::size_t last, typename Search::Work_space& ws) {
-    for(std::size_t i = first; i < last; ++i) out[i] = search.lengths(candidates[i], i, ws);
+    for(std::size_t i = first; i < last; ++i) out[i] = search.lengths(candidates[i], i, ws, stop_of(i));
   };
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel)
@@ -52,6 +54,61 @@ std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& i
     run(0, candidates.size(), ws);
   }
   return out;
+}
+
+// The same, every search to its end.
+template <typename TriangleMesh>
+std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry,
+                                            const std::vector<double>& angle, const std::vector<double>& band_angle,
+                                            double crease_angle, const std::vector<std::size_t>& candidates,
+                                            bool parallel = false, int max_levels = 8)
+{
+  return crease_gap_lengths(idx, std::move(geometry), angle, band_angle, crease_angle, candidates, parallel, max_levels,
+                            [](std::size_t) { return [](const Gap_lengths&) { return false; }; });
+}
+
+// Per candidate, at least the lengths its search can find: those of every crease and band
+// edge within its ball, reached from the candidate or not (an AABB tree of these edges;
+// the same clipped lengths as the search's).
+inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g, const std::vector<double>& angle,
+                                                         const std::vector<double>& band_angle, double crease_angle,
+                                                         const std::vector<std::size_t>& candidates)
+{
+  typedef CGAL::Simple_cartesian<double> K;
+  typedef std::vector<K::Segment_3>::const_iterator Iterator;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Iterator> > > Tree;
+  std::vector<Gap_lengths> bound(candidates.size());
+  if(candidates.empty()) return bound;
+  const std::vector<Eigen::Vector3d>& points = g.points;
+  std::vector<K::Segment_3> segments;
+  std::vector<std::size_t> edge; // per segment, its edge
+  auto point = [&](std::size_t v) { return K::Point_3(points[v].x(), points[v].y(), points[v].z()); };
+  for(std::size_t e = 0; e < g.ends.size(); ++e)
+    if(angle[e] >= crease_angle || is_crease_gap_band_edge(angle[e], band_angle[e], crease_angle))
+    {
+      segments.emplace_back(point(g.ends[e][0]), point(g.ends[e][1]));
+      edge.push_back(e);
+    }
+  const double r = crease_gap_ball_radius(points, g.ends);
+  Tree tree(segments.begin(), segments.end());
+  std::vector<Tree::Primitive_id> hits;
+  for(std::size_t i = 0; i < candidates.size(); ++i)
+  {
+    const std::size_t c = candidates[i];
+    const Eigen::Vector3d m = 0.5 * (points[g.ends[c][0]] + points[g.ends[c][1]]);
+    hits.clear();
+    tree.all_intersected_primitives(K::Iso_cuboid_3(m.x() - 1.01 * r, m.y() - 1.01 * r, m.z() - 1.01 * r,
+                                                    m.x() + 1.01 * r, m.y() + 1.01 * r, m.z() + 1.01 * r),
+                                    std::back_inserter(hits));
+    for(const Tree::Primitive_id& id : hits)
+    {
+      const std::size_t e = edge[std::size_t(id - segments.begin())];
+      const double in = length_in_ball(points[g.ends[e][0]], points[g.ends[e][1]], m, r);
+      if(angle[e] >= crease_angle) bound[i].crease += in;
+      else bound[i].band += in;
+    }
+  }
+  return bound;
 }
 
 // The candidates whose ball holds a band edge (is_crease_gap_band_edge), or may: those
@@ -112,11 +169,22 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
   Edge_geometry geometry = edge_geometry(idx, vpm);
   const std::vector<std::size_t> searched =
     candidates_near_band_edges(geometry, angle, band_angle, crease_angle, candidates);
+  // A search ends once its verdict is sure: the band it found already exceeds the share
+  // of all the crease length within the ball, or all the band length within the ball is
+  // below the share of the crease it found (the sums only grow; a relative margin of 1e-9
+  // covers the order of the additions); the verdict is that of the whole search.
+  const std::vector<Gap_lengths> bound = crease_gap_length_bounds(geometry, angle, band_angle, crease_angle, searched);
+  const double ratio = Crease_gap::ratio, margin = 1 + 1e-9;
   const std::vector<Gap_lengths> lengths =
     crease_gap_lengths(idx, std::move(geometry), angle, band_angle, crease_angle, searched, parallel,
-                       searched.size() >= crease_gap_hierarchy_least_candidates ? 8 : 0);
+                       searched.size() >= crease_gap_hierarchy_least_candidates ? 8 : 0, [&](std::size_t i) {
+                         const Gap_lengths b = bound[i];
+                         return [b, ratio, margin](const Gap_lengths& s) {
+                           return s.band > ratio * b.crease * margin || b.band * margin < ratio * s.crease;
+                         };
+                       });
   for(std::size_t i = 0; i < searched.size(); ++i)
-    if(lengths[i].band > Crease_gap::ratio * lengths[i].crease) is_crease[searched[i]] = 0;
+    if(lengths[i].band > ratio * lengths[i].crease) is_crease[searched[i]] = 0;
 }
 
 } // namespace internal
