@@ -66,6 +66,19 @@ void check_hierarchy_against_faces(const SM& m, const std::vector<std::size_t>& 
   BOOST_TEST(with_band > 0u);
 }
 
+// CGAL's fandisk subdivided flat once (51,784 faces).
+SM fandisk_subdivided_once()
+{
+  std::vector<Epick::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_soup(std::string(FS_MESH_DIR) + "/fandisk.off", points, polygons));
+  fs_test::Soup s;
+  for(const auto& p : points) s.points.push_back({ p.x(), p.y(), p.z() });
+  s.faces = polygons;
+  fs_test::subdivide_flat(s);
+  return fs_test::to_mesh<SM>(s);
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(crease_gap_search)
@@ -112,14 +125,7 @@ BOOST_AUTO_TEST_CASE(cube_edges_inside_a_ball)
 // the bends of its blends, at every 50th edge and every crease candidate.
 BOOST_AUTO_TEST_CASE(clusters_give_the_lengths_of_the_face_search_on_fandisk)
 {
-  std::vector<Epick::Point_3> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  BOOST_REQUIRE(CGAL::IO::read_polygon_soup(std::string(FS_MESH_DIR) + "/fandisk.off", points, polygons));
-  fs_test::Soup s;
-  for(const auto& p : points) s.points.push_back({ p.x(), p.y(), p.z() });
-  s.faces = polygons;
-  fs_test::subdivide_flat(s);
-  const SM m = fs_test::to_mesh<SM>(s);
+  const SM m = fandisk_subdivided_once();
   const Indexing idx(m);
   const std::vector<double> angle = raw_angles(idx, m);
   std::vector<std::size_t> candidates;
@@ -135,14 +141,7 @@ BOOST_AUTO_TEST_CASE(clusters_give_the_lengths_of_the_face_search_on_fandisk)
 // candidates fail).
 BOOST_AUTO_TEST_CASE(searches_end_once_their_verdict_is_sure)
 {
-  std::vector<Epick::Point_3> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  BOOST_REQUIRE(CGAL::IO::read_polygon_soup(std::string(FS_MESH_DIR) + "/fandisk.off", points, polygons));
-  fs_test::Soup s;
-  for(const auto& p : points) s.points.push_back({ p.x(), p.y(), p.z() });
-  s.faces = polygons;
-  fs_test::subdivide_flat(s);
-  const SM fandisk = fs_test::to_mesh<SM>(s);
+  const SM fandisk = fandisk_subdivided_once();
   const SM tube = fs_test::to_mesh<SM>(fs_test::parametric_grid(20, 4, true, false, [](double u, double v) {
     const double a = 2 * 3.14159265358979323846 * u, r = u < 1e-9 ? 1.03 : 1.;
     return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), 4 * v };
