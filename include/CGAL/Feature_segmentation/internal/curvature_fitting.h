@@ -25,6 +25,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -177,6 +179,8 @@ public:
   void estimate(unsigned int rings, double radius = 0., bool parallel = false)
   {
     const std::size_t nv = m_idx.number_of_vertices();
+    if(nv >= std::size_t(std::uint32_t(-1)))
+      throw std::length_error("the curvature fit stores vertex ids in 32 bits: the mesh has too many vertices");
     m_curv.assign(nv, Vertex_curvature());
     build_adjacency();
     m_clusters = Vertex_clusters();
@@ -188,8 +192,8 @@ public:
         m_clusters.build(m_adj_begin, m_adj, static_cast<std::size_t>(size));
     }
     auto fit_range = [&](std::size_t first, std::size_t last, Work_space& ws) {
-      if(ws.stamp.size() != nv) ws.stamp.assign(nv, std::size_t(-1));
-      if(ws.cluster_stamp.size() != m_clusters.size()) ws.cluster_stamp.assign(m_clusters.size(), std::size_t(-1));
+      if(ws.stamp.size() != nv) ws.stamp.assign(nv, std::uint32_t(-1));
+      if(ws.cluster_stamp.size() != m_clusters.size()) ws.cluster_stamp.assign(m_clusters.size(), std::uint32_t(-1));
       for(std::size_t v = first; v < last; ++v)
       {
         collect_neighborhood(v, rings, radius * radius, ws, ws.neighborhood);
@@ -252,8 +256,8 @@ private:
     {
       auto h = halfedge(e, tm);
       std::size_t a = m_idx.id(source(h, tm)), b = m_idx.id(target(h, tm));
-      m_adj[fill[a]++] = b;
-      m_adj[fill[b]++] = a;
+      m_adj[fill[a]++] = std::uint32_t(b);
+      m_adj[fill[b]++] = std::uint32_t(a);
     }
   }
 
@@ -264,9 +268,10 @@ private:
   void collect_neighborhood(std::size_t v, unsigned int rings, double radius2, WorkSpace& ws,
                             std::vector<std::size_t>& out) const
   {
-    std::vector<std::size_t>& stamp = ws.stamp;
+    std::vector<std::uint32_t>& stamp = ws.stamp;
+    const std::uint32_t mark = std::uint32_t(v);
     out.clear();
-    stamp[v] = v;
+    stamp[v] = mark;
     std::size_t front_begin = 0;
     out.push_back(v);
     const Vec3& p0 = m_geom.points[v];
@@ -285,13 +290,13 @@ private:
       for(std::size_t i = front_begin; i < front_end; ++i)
         for(std::size_t k = m_adj_begin[out[i]]; k < m_adj_begin[out[i] + 1]; ++k)
         {
-          std::size_t w = m_adj[k];
-          if(stamp[w] == v)
+          const std::size_t w = m_adj[k];
+          if(stamp[w] == mark)
             continue;
           if(!within_rings && ((m_geom.points[w] - p0).squaredNorm() > radius2 ||
                                m_geom.vertex_normals[w].dot(n0) < cone_cosine))
             continue;
-          stamp[w] = v;
+          stamp[w] = mark;
           out.push_back(w);
         }
       front_begin = front_end;
@@ -320,6 +325,7 @@ private:
   template <typename WorkSpace>
   void collect_clusters(std::size_t v, double radius2, WorkSpace& ws, std::vector<std::size_t>& out) const
   {
+    const std::uint32_t mark = std::uint32_t(v);
     const Vec3& p0 = m_geom.points[v];
     const Vec3& n0 = m_geom.vertex_normals[v];
     std::vector<std::size_t>& queue = ws.cluster_queue;
@@ -327,18 +333,18 @@ private:
     for(std::size_t w : out)
     {
       const std::size_t c = m_clusters.cluster_of[w];
-      if(ws.cluster_stamp[c] != v) { ws.cluster_stamp[c] = v; queue.push_back(c); }
+      if(ws.cluster_stamp[c] != mark) { ws.cluster_stamp[c] = mark; queue.push_back(c); }
     }
     for(std::size_t j = 0; j < queue.size(); ++j)
       for(std::size_t k = m_clusters.neighbour_begin[queue[j]]; k < m_clusters.neighbour_begin[queue[j] + 1]; ++k)
       {
         const std::size_t d = m_clusters.neighbours[k];
-        if(ws.cluster_stamp[d] == v) continue;
-        ws.cluster_stamp[d] = v;
+        if(ws.cluster_stamp[d] == mark) continue;
+        ws.cluster_stamp[d] = mark;
         const std::size_t w = m_clusters.representative[d];
         if((m_geom.points[w] - p0).squaredNorm() > radius2 || m_geom.vertex_normals[w].dot(n0) < cone_cosine) continue;
         queue.push_back(d);
-        if(ws.stamp[w] != v) { ws.stamp[w] = v; out.push_back(w); }
+        if(ws.stamp[w] != mark) { ws.stamp[w] = mark; out.push_back(w); }
       }
   }
 
@@ -349,7 +355,8 @@ private:
   // collect_neighborhood().
   struct Work_space
   {
-    std::vector<std::size_t> stamp, neighborhood, cluster_stamp, cluster_queue;
+    std::vector<std::uint32_t> stamp, cluster_stamp; // 32 bits: half the memory the search reads
+    std::vector<std::size_t> neighborhood, cluster_queue;
   };
 
   void fit_vertex(std::size_t v, const std::vector<std::size_t>& nbh)
@@ -454,7 +461,8 @@ private:
   const Indexing& m_idx;
   Mesh_geometry<TriangleMesh, VPM> m_geom;
   std::vector<Vertex_curvature> m_curv;
-  std::vector<std::size_t> m_adj_begin, m_adj;
+  std::vector<std::size_t> m_adj_begin;
+  std::vector<std::uint32_t> m_adj; // 32-bit vertex ids (estimate() checks the count)
   Vertex_clusters m_clusters; // empty unless the radius spans many rings
 };
 

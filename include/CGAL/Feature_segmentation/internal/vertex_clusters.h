@@ -29,7 +29,8 @@ struct Vertex_clusters
   // Clusters of up to `size` vertices, each grown breadth first over the graph
   // (adj_begin, adj: CSR of the vertices' neighbours) from the first vertex not yet in a
   // cluster, in index order: the same clusters on every run and at any thread count.
-  void build(const std::vector<std::size_t>& adj_begin, const std::vector<std::size_t>& adj, std::size_t size)
+  template <typename Neighbour>
+  void build(const std::vector<std::size_t>& adj_begin, const std::vector<Neighbour>& adj, std::size_t size)
   {
     const std::size_t nv = adj_begin.size() - 1;
     {
