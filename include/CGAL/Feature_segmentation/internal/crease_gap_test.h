@@ -14,8 +14,8 @@
 #endif
 
 #include <algorithm>
-#include <iterator>
 #include <cstddef>
+#include <iterator>
 #include <utility>
 #include <vector>
 
