@@ -134,8 +134,8 @@ public:
   ///   \cgalParamNBegin{crest_lines_on_clean_tessellations} \cgalParamDescription{whether the crest
   ///   lines of a tessellation of a CAD part (a clean one, a noisy one, or one its creases cut
   ///   into pieces) get the full \f$ \alpha \f$ (the paper's features); if not, their
-  ///   \f$ \alpha_e \f$ is \f$ \alpha
-  ///   \f$ minus 0.5, so that the creases and the curvature discontinuities bound the patches}
+  ///   \f$ \alpha_e \f$ is \f$ \alpha \f$ minus 0.5, so that the creases and the curvature
+  ///   discontinuities bound the patches}
   ///   \cgalParamType{`bool`} \cgalParamDefault{`default_crest_lines_on_clean_tessellations`
   ///   (`false`)} \cgalParamNEnd
   ///   \cgalParamNBegin{principal_curvature_map} \cgalParamDescription{the principal curvatures of

@@ -43,8 +43,8 @@ constexpr bool default_tangent_discontinuities = true;
 /// \ingroup PkgFeatureSegmentationSegmentation
 /// The default of the named parameter `crest_lines_on_clean_tessellations`: the crest
 /// lines of a tessellation of a CAD part (a clean one, a noisy one, or one that its
-/// creases cut into pieces) weigh less than its creases (their `alpha_e` is alpha minus 0.5) unless it
-/// is true.
+/// creases cut into pieces) weigh less than its creases (their `alpha_e` is alpha
+/// minus 0.5) unless it is true.
 constexpr bool default_crest_lines_on_clean_tessellations = false;
 
 /// \ingroup PkgFeatureSegmentationSegmentation

@@ -106,9 +106,8 @@ namespace Feature_segmentation {
 ///   \cgalParamNBegin{crest_lines_on_clean_tessellations}
 ///     \cgalParamDescription{whether the crest lines of a tessellation of a CAD part (a clean one, a noisy
 ///                           one, or one its creases cut into pieces) get the full \f$ \alpha \f$ (the
-///                           paper's features); if
-///                           not, their \f$ \alpha_e \f$ is \f$ \alpha \f$ minus 0.5, so that the creases and
-///                           the curvature discontinuities bound the patches}
+///                           paper's features); if not, their \f$ \alpha_e \f$ is \f$ \alpha \f$ minus
+///                           0.5, so that the creases and the curvature discontinuities bound the patches}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`default_crest_lines_on_clean_tessellations` (`false`)}
 ///     \cgalParamExtra{Without effect when `feature_lines` is given.}

@@ -115,7 +115,7 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
 // with a band edge closer to their midpoint than the ball's radius (plus a relative
 // 1e-6, far above rounding). The others pass the gap test whatever their ball holds
 // (no band length is at most any share of the crease length), so they need no search:
-// on a clean CAD tessellation, which has no band edge at all, none does.
+// on a clean CAD tessellation, which has few band edges, few do.
 inline std::vector<std::size_t> candidates_near_band_edges(const Edge_geometry& g, const std::vector<double>& angle,
                                                            const std::vector<double>& band_angle,
                                                            double crease_angle,
