@@ -9,6 +9,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "crease_meshes.h"
 #include "test_meshes.h"
 
 #include <algorithm>
@@ -264,6 +265,61 @@ BOOST_AUTO_TEST_CASE(only_candidates_near_band_edges_are_searched)
   BOOST_TEST(ccandidates.size() == 120u); // 12 cube edges of 10 mesh edges
   const FS::internal::Edge_geometry cgeometry = FS::internal::edge_geometry(cidx, get(CGAL::vertex_point, cube));
   BOOST_TEST(FS::internal::candidates_near_band_edges(cgeometry, cangle, cangle, 20., ccandidates).empty());
+}
+
+// The band weighs by direction (band_weight): a band edge counts its length in the ball
+// times the squared cosine of its angle with the candidate.
+// - A rod of radius 1 and length 40, 20 facets round (its rulings bend by 18 degrees, in
+//   the band) and flat ends: the rulings run across the ends' 90-degree ring edges
+//   (cosine 0), so the band of every ring edge's ball is 0 though its rulings' length
+//   there exceeds half the ring's: the 40 ring edges pass the test, with no exception for
+//   strong bends (keep_from 360).
+// - A tube of 20 facets with one ruling pushed out to bend by 29 degrees: its candidates
+//   run along the band rulings (cosine 1), which count whole, and it fails the test.
+BOOST_AUTO_TEST_CASE(band_edges_weigh_by_the_squared_cosine_of_their_angle)
+{
+  std::vector<int> side;
+  const SM rod = fs_test::to_mesh<SM>(fs_test::closed_rod([](double, double) { return 1.; }, 40., 20, 80, side));
+  const SM tube = fs_test::to_mesh<SM>(fs_test::parametric_grid(20, 4, true, false, [](double u, double v) {
+    const double a = 2 * 3.14159265358979323846 * u, r = u < 1e-9 ? 1.03 : 1.;
+    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), 4 * v };
+  }));
+  for(const SM* m : { &rod, &tube })
+  {
+    const Indexing idx(*m);
+    const std::vector<double> angle = raw_angles(idx, *m);
+    const auto vpm = get(CGAL::vertex_point, *m);
+    const FS::internal::Edge_geometry geometry = FS::internal::edge_geometry(idx, vpm);
+    std::vector<std::size_t> candidates;
+    std::vector<char> is_crease(angle.size(), 0);
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+      if(angle[e] >= 20) { candidates.push_back(e); is_crease[e] = 1; }
+    BOOST_REQUIRE(candidates.size() == (m == &rod ? 40u : 4u));
+    const double r = FS::internal::Crease_gap_search<SM>(idx, geometry, angle, angle, 20.).radius();
+    for(int levels : { 0, 8 })
+    {
+      const auto lengths = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false, levels);
+      for(std::size_t i = 0; i < candidates.size(); ++i)
+      {
+        // every band edge in the ball, unweighted (the ball's surface is connected here)
+        const auto& ends = geometry.ends[candidates[i]];
+        const Eigen::Vector3d c = 0.5 * (geometry.points[ends[0]] + geometry.points[ends[1]]);
+        double band = 0;
+        for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+          if(FS::internal::is_crease_gap_band_edge(angle[e], angle[e], 20.))
+            band += FS::internal::length_in_ball(geometry.points[geometry.ends[e][0]],
+                                                 geometry.points[geometry.ends[e][1]], c, r);
+        BOOST_TEST(band > FS::internal::Crease_gap::ratio * lengths[i].crease);
+        if(m == &rod)
+          BOOST_TEST(lengths[i].band <= 1e-12 * band);
+        else
+          BOOST_TEST(lengths[i].band == band, boost::test_tools::tolerance(1e-9));
+      }
+    }
+    FS::internal::keep_creases_with_gap(idx, vpm, angle, angle, 0., 20., is_crease, false);
+    const std::size_t kept = std::size_t(std::count(is_crease.begin(), is_crease.end(), char(1)));
+    BOOST_TEST(kept == (m == &rod ? 40u : 0u));
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

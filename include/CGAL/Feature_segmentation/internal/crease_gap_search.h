@@ -35,8 +35,9 @@ namespace internal {
 // The constants of the gap test, which tells a crease from a strong bend of a smooth
 // surface: within the ball around a candidate edge's midpoint (radius `radius` of the
 // diagonal, at least two mean edge lengths), on the surface reached from the candidate,
-// the edges bending by [band * crease_angle, crease_angle) may have at most `ratio`
-// times the length of the candidates. A CAD tessellation leaves a gap below its creases
+// the edges bending by [band * crease_angle, crease_angle), each weighted by the
+// squared cosine of its angle with the candidate (band_weight()), may have at most
+// `ratio` times the length of the candidates. A CAD tessellation leaves a gap below its creases
 // (on the 14 parts of the evaluation, no edge between 15 and 30 degrees apart from the
 // creases); a coarse or scanned smooth surface bends by every angle, so its strong bends
 // come with as many slightly weaker ones around them.
@@ -58,10 +59,52 @@ struct Crease_gap
 };
 
 // The lengths one ball of the gap test holds: of the edges bending by crease_angle or
-// more, and of those in the band below.
+// more, and of those in the band below, each band edge's length times the squared
+// cosine of its angle with the candidate (band_weight()).
 struct Gap_lengths
 {
   double crease = 0, band = 0;
+};
+
+// The weight of a band edge along `d` in the ball of a candidate along the unit vector
+// `t`: the squared cosine of their angle (1 for a zero-length d, which adds nothing).
+// The weaker bends that make a strong bend one of a smooth surface run beside it (a
+// ridge's flanks), while the rulings of a coarse cylinder or cone that ends in a crease
+// run across it: those bend by 18 to 22.5 degrees with 16 to 20 facets round, in the
+// band, yet a cone meeting a cylinder at 35 degrees, or a tube's 90-degree end, is a
+// crease. A squared cosine, so that the band of a cluster of edges is one symmetric
+// tensor, read for any candidate (Band_tensor).
+inline double band_weight(const Eigen::Vector3d& d, const Eigen::Vector3d& t)
+{
+  const double dd = d.squaredNorm();
+  if(!(dd > 0)) return 1.;
+  const double c = d.dot(t);
+  return c * c / dd;
+}
+
+// The band edges of a cluster as one symmetric tensor, the sum of length * d d^T / |d|^2
+// over its edges: along(t) = t^T M t is their length weighted by band_weight(d, t).
+struct Band_tensor
+{
+  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+
+  void add(const Eigen::Vector3d& d, double length)
+  {
+    const double dd = d.squaredNorm();
+    if(!(dd > 0)) return;
+    const double w = length / dd;
+    xx += w * d.x() * d.x(); xy += w * d.x() * d.y(); xz += w * d.x() * d.z();
+    yy += w * d.y() * d.y(); yz += w * d.y() * d.z(); zz += w * d.z() * d.z();
+  }
+  void add(const Band_tensor& o)
+  {
+    xx += o.xx; xy += o.xy; xz += o.xz; yy += o.yy; yz += o.yz; zz += o.zz;
+  }
+  double along(const Eigen::Vector3d& t) const
+  {
+    return xx * t.x() * t.x() + yy * t.y() * t.y() + zz * t.z() * t.z() +
+           2 * (xy * t.x() * t.y() + xz * t.x() * t.z() + yz * t.y() * t.z());
+  }
 };
 
 // Whether an edge is in the band below the creases: bending by less than crease_angle,
@@ -159,7 +202,8 @@ class Crease_gap_search
     std::vector<Index> parent;                   // per child (a face, or a cluster of the level below)
     std::vector<Eigen::Vector3d> center;         // per cluster: its bounding sphere
     std::vector<double> radius;
-    std::vector<Gap_lengths> lengths;            // of the edges it owns
+    std::vector<double> crease;                  // the length of the crease edges it owns
+    std::vector<Band_tensor> band;               // its band edges (an edge belongs to one cluster)
     std::vector<char> has_zero_length_edge;
     std::vector<std::size_t> border_begin;       // CSR over `border`
     std::vector<std::array<Index, 2> > border;   // (face outside, edge) pairs, by neighbour
@@ -235,6 +279,8 @@ public:
     prepare(ws);
     const TriangleMesh& tm = m_idx.mesh();
     const Eigen::Vector3d c = 0.5 * (end0(e) + end1(e));
+    Eigen::Vector3d t = end1(e) - end0(e); // the candidate's direction
+    if(t.squaredNorm() > 0) t.normalize();
     const double r_whole = m_radius * (1 - 1e-9); // a cluster inside this radius is inside the ball
     const std::size_t nl = m_levels.size();
     // whether cluster x of level l lies inside the ball, once per search
@@ -272,8 +318,8 @@ public:
         if(ws.done_stamp[l][cluster] == stamp) continue;
         ws.done_stamp[l][cluster] = stamp;
         const Level& L = m_levels[l];
-        sum.crease += L.lengths[cluster].crease;
-        sum.band += L.lengths[cluster].band;
+        sum.crease += L.crease[cluster];
+        sum.band += L.band[cluster].along(t);
         if(stop(sum)) return sum;
         for(std::size_t g = L.group_begin[cluster]; g < L.group_begin[cluster + 1]; ++g)
         {
@@ -312,7 +358,7 @@ public:
         // counted here unless its cluster is taken whole (most edges count for nothing)
         if(counts(ye) && whole(m_owner[ye], owner_cluster) < 0)
         {
-          add(ye, in, sum);
+          add(ye, in, t, sum);
           if(stop(sum)) return sum;
         }
         if(y == none || ws.face_stamp[y] == stamp) continue;
@@ -336,10 +382,11 @@ private:
 
   bool counts(std::size_t x) const { return m_kind[x] != OTHER; }
 
-  void add(std::size_t x, double length, Gap_lengths& sum) const
+  // adds `length` of edge x to the sums of a candidate along t
+  void add(std::size_t x, double length, const Eigen::Vector3d& t, Gap_lengths& sum) const
   {
     if(m_kind[x] == CREASE) sum.crease += length;
-    else if(m_kind[x] == BAND) sum.band += length;
+    else if(m_kind[x] == BAND) sum.band += length * band_weight(end1(x) - end0(x), t);
   }
 
   void prepare(Work_space& ws) const
@@ -426,7 +473,8 @@ private:
       for(std::size_t f = 0; f < nf; ++f) next_face_cluster[f] = L.parent[face_cluster[f]];
       L.center.resize(n);
       L.radius.assign(n, 0.);
-      L.lengths.assign(n, Gap_lengths());
+      L.crease.assign(n, 0.);
+      L.band.assign(n, Band_tensor());
       L.has_zero_length_edge.assign(n, 0);
       L.border_begin.assign(n + 1, 0);
       L.group_begin.assign(n + 1, 0);
@@ -437,7 +485,8 @@ private:
           const Index x = L.parent[m_owner[e]];
           const double length = (end1(e) - end0(e)).norm();
           if(length == 0) L.has_zero_length_edge[x] = 1;
-          add(e, length, L.lengths[x]);
+          if(m_kind[e] == CREASE) L.crease[x] += length;
+          else if(m_kind[e] == BAND) L.band[x].add(end1(e) - end0(e), length);
         }
       for(std::size_t x = 0; x < n; ++x)
       {
@@ -461,8 +510,8 @@ private:
         if(level > 0)
           for(Index child : members[x])
           {
-            L.lengths[x].crease += below->lengths[child].crease;
-            L.lengths[x].band += below->lengths[child].band;
+            L.crease[x] += below->crease[child];
+            L.band[x].add(below->band[child]);
             if(below->has_zero_length_edge[child]) L.has_zero_length_edge[x] = 1;
           }
         // the border: the children's pairs that leave the cluster

@@ -96,6 +96,8 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
   {
     const std::size_t c = candidates[i];
     const Eigen::Vector3d m = 0.5 * (points[g.ends[c][0]] + points[g.ends[c][1]]);
+    Eigen::Vector3d t = points[g.ends[c][1]] - points[g.ends[c][0]];
+    if(t.squaredNorm() > 0) t.normalize();
     hits.clear();
     tree.all_intersected_primitives(K::Iso_cuboid_3(m.x() - 1.01 * r, m.y() - 1.01 * r, m.z() - 1.01 * r,
                                                     m.x() + 1.01 * r, m.y() + 1.01 * r, m.z() + 1.01 * r),
@@ -105,7 +107,7 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
       const std::size_t e = edge[std::size_t(id - segments.begin())];
       const double in = length_in_ball(points[g.ends[e][0]], points[g.ends[e][1]], m, r);
       if(angle[e] >= crease_angle) bound[i].crease += in;
-      else bound[i].band += in;
+      else bound[i].band += in * band_weight(points[g.ends[e][1]] - points[g.ends[e][0]], t);
     }
   }
   return bound;
