@@ -168,7 +168,7 @@ BOOST_AUTO_TEST_CASE(searches_end_once_their_verdict_is_sure)
     }
     BOOST_TEST(below_bound == candidates.size());
     // the searches that end early find less than the whole search
-    const auto partial = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false, 8,
+    const auto partial = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false, 8, true,
                                                           [&](std::size_t i) {
       const FS::internal::Gap_lengths b = bound[i];
       return [b](const FS::internal::Gap_lengths& l) {

@@ -78,15 +78,13 @@ bool creases_cut_into_pieces(const Mesh_indexing<TriangleMesh>& idx, const std::
   return piece_share(idx, area, creased, 0., false) < cad_largest_piece_share;
 }
 
-// Whether a clean tessellation is one of a CAD part (cad_largest_piece_share and
-// cad_planar_share): `is_crease` the creases, `normal` and `area` per face, `diagonal`
-// the bounding box's.
+// Whether cad_planar_share of the area of the mesh of `idx` or more lies in exactly planar
+// regions of at least (cad_planar_side x diagonal)^2: `normal` and `area` per face,
+// `diagonal` the bounding box's. The planes and ruled strips of a CAD tessellator.
 template <typename TriangleMesh>
-bool is_cad_tessellation(const Mesh_indexing<TriangleMesh>& idx, const std::vector<char>& is_crease,
-                         const std::vector<Eigen::Vector3d>& normal, const std::vector<double>& area,
-                         double diagonal)
+bool has_large_planar_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal,
+                              const std::vector<double>& area, double diagonal)
 {
-  if(creases_cut_into_pieces(idx, is_crease, area)) return true;
   const TriangleMesh& tm = idx.mesh();
   const auto not_planar = [&](std::size_t e) { // asked of interior edges only
     const auto h = halfedge(idx.edge_at(e), tm);
@@ -94,6 +92,16 @@ bool is_cad_tessellation(const Mesh_indexing<TriangleMesh>& idx, const std::vect
            cad_planar_difference * cad_planar_difference;
   };
   return piece_share(idx, area, not_planar, CGAL::square(cad_planar_side * diagonal), true) >= cad_planar_share;
+}
+
+// Whether a clean tessellation is one of a CAD part (cad_largest_piece_share and
+// cad_planar_share): `is_crease` the creases, `area` per face, `planar` whether it has
+// large planar regions (has_large_planar_regions()).
+template <typename TriangleMesh>
+bool is_cad_tessellation(const Mesh_indexing<TriangleMesh>& idx, const std::vector<char>& is_crease,
+                         const std::vector<double>& area, bool planar)
+{
+  return planar || creases_cut_into_pieces(idx, is_crease, area);
 }
 
 } // namespace internal

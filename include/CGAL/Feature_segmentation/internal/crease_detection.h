@@ -327,12 +327,10 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
                                                                 : noisy_filter_rounds(raw_roughness, filter_iterations),
                                                        crease_filter_sigma_r, stop, parallel), parallel)
             : raw;
-  std::vector<char> is_crease(angle.size(), 0);
-  for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
-  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
-                        clean ? Crease_gap::strong_angle : 360.);
-  double diagonal = 0.; // of the bounding box, for the rules of clean tessellations
-  if(clean)
+  // the bounding box's diagonal, for the rules of clean and smooth tessellations
+  const bool smooth = raw_roughness <= Crease_gap::raw_roughness;
+  double diagonal = 0.;
+  if(smooth)
   {
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
     for(auto v : vertices(idx.mesh()))
@@ -344,11 +342,20 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
     }
     diagonal = (hi - lo).norm();
   }
+  // The planes and ruled strips of a CAD tessellator (none on a noisy mesh). With them,
+  // the gap test weighs the band by direction: the facets of a coarse cylinder or cone
+  // run across the crease where it ends. A smooth model has none, and its strong bends
+  // come with weaker ones across them too (twirl: 37 crease edges more, weighted).
+  const bool planar = smooth && has_large_planar_regions(idx, normal, area, diagonal);
+  std::vector<char> is_crease(angle.size(), 0);
+  for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
+  keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
+                        clean ? Crease_gap::strong_angle : 360., planar);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   if(clean) join_isolated_crease_faces(idx, angle, is_crease);
   else join_isolated_crease_faces(idx, angle, is_crease, crease_noisy_piece_max_faces, 180.);
   // a noisy mesh's crest lines weigh less whatever its creases (see above)
-  cad = clean ? is_cad_tessellation(idx, is_crease, normal, area, diagonal)
+  cad = clean ? is_cad_tessellation(idx, is_crease, area, planar)
               : raw_roughness > Crease_gap::raw_roughness || creases_cut_into_pieces(idx, is_crease, area);
   return is_crease;
 }

@@ -100,6 +100,8 @@ struct Band_tensor
   {
     xx += o.xx; xy += o.xy; xz += o.xz; yy += o.yy; yz += o.yz; zz += o.zz;
   }
+  // their length, unweighted
+  double trace() const { return xx + yy + zz; }
   double along(const Eigen::Vector3d& t) const
   {
     return xx * t.x() * t.x() + yy * t.y() * t.y() + zz * t.z() * t.z() +
@@ -213,10 +215,12 @@ class Crease_gap_search
 
 public:
   // `geometry` is edge_geometry(idx, the vertex point map); `max_levels` 0: the search
-  // face by face.
+  // face by face; `by_direction`: the band edges weigh by band_weight(), else their
+  // lengths count whole.
   Crease_gap_search(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry, const std::vector<double>& angle,
-                    const std::vector<double>& band_angle, double crease_angle, int max_levels = 8)
-    : m_idx(idx), m_crease_angle(crease_angle), m_points(std::move(geometry.points)), m_ends(std::move(geometry.ends))
+                    const std::vector<double>& band_angle, double crease_angle, int max_levels = 8,
+                    bool by_direction = true)
+    : m_idx(idx), m_crease_angle(crease_angle), m_by_direction(by_direction), m_points(std::move(geometry.points)), m_ends(std::move(geometry.ends))
   {
     const TriangleMesh& tm = idx.mesh();
     const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
@@ -319,7 +323,7 @@ public:
         ws.done_stamp[l][cluster] = stamp;
         const Level& L = m_levels[l];
         sum.crease += L.crease[cluster];
-        sum.band += L.band[cluster].along(t);
+        sum.band += m_by_direction ? L.band[cluster].along(t) : L.band[cluster].trace();
         if(stop(sum)) return sum;
         for(std::size_t g = L.group_begin[cluster]; g < L.group_begin[cluster + 1]; ++g)
         {
@@ -386,7 +390,7 @@ private:
   void add(std::size_t x, double length, const Eigen::Vector3d& t, Gap_lengths& sum) const
   {
     if(m_kind[x] == CREASE) sum.crease += length;
-    else if(m_kind[x] == BAND) sum.band += length * band_weight(end1(x) - end0(x), t);
+    else if(m_kind[x] == BAND) sum.band += m_by_direction ? length * band_weight(end1(x) - end0(x), t) : length;
   }
 
   void prepare(Work_space& ws) const
@@ -548,6 +552,7 @@ private:
   const Mesh_indexing<TriangleMesh>& m_idx;
   enum Kind : char { OTHER, CREASE, BAND };
   double m_crease_angle;
+  bool m_by_direction;
   double m_radius = 0;
   std::vector<Eigen::Vector3d> m_points;            // per vertex
   std::vector<std::array<Index, 2> > m_ends;        // per edge: its vertices

@@ -24,18 +24,19 @@ namespace Feature_segmentation {
 namespace internal {
 
 // The gap test's lengths for every edge of `candidates` (by TBB's threads if
-// `parallel`, with the same result at any count); `max_levels` as Crease_gap_search's;
-// the search of candidate i ends once `stop_of(i)` holds for its lengths so far.
+// `parallel`, with the same result at any count); `max_levels` and `by_direction` as
+// Crease_gap_search's; the search of candidate i ends once `stop_of(i)` holds for its
+// lengths so far.
 template <typename TriangleMesh, typename StopOf>
 std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry,
                                             const std::vector<double>& angle, const std::vector<double>& band_angle,
                                             double crease_angle, const std::vector<std::size_t>& candidates,
-                                            bool parallel, int max_levels, const StopOf& stop_of)
+                                            bool parallel, int max_levels, bool by_direction, const StopOf& stop_of)
 {
   std::vector<Gap_lengths> out(candidates.size());
   if(candidates.empty()) return out;
   typedef Crease_gap_search<TriangleMesh> Search;
-  const Search search(idx, std::move(geometry), angle, band_angle, crease_angle, max_levels);
+  const Search search(idx, std::move(geometry), angle, band_angle, crease_angle, max_levels, by_direction);
   auto run = [&](std::size_t first, std::size_t last, typename Search::Work_space& ws) {
     for(std::size_t i = first; i < last; ++i) out[i] = search.lengths(candidates[i], i, ws, stop_of(i));
   };
@@ -61,10 +62,10 @@ template <typename TriangleMesh>
 std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry,
                                             const std::vector<double>& angle, const std::vector<double>& band_angle,
                                             double crease_angle, const std::vector<std::size_t>& candidates,
-                                            bool parallel = false, int max_levels = 8)
+                                            bool parallel = false, int max_levels = 8, bool by_direction = true)
 {
   return crease_gap_lengths(idx, std::move(geometry), angle, band_angle, crease_angle, candidates, parallel, max_levels,
-                            [](std::size_t) { return [](const Gap_lengths&) { return false; }; });
+                            by_direction, [](std::size_t) { return [](const Gap_lengths&) { return false; }; });
 }
 
 // Per candidate, at least the lengths its search can find: those of every crease and band
@@ -72,7 +73,8 @@ std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& i
 // the same clipped lengths as the search's).
 inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g, const std::vector<double>& angle,
                                                          const std::vector<double>& band_angle, double crease_angle,
-                                                         const std::vector<std::size_t>& candidates)
+                                                         const std::vector<std::size_t>& candidates,
+                                                         bool by_direction = true)
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef std::vector<K::Segment_3>::const_iterator Iterator;
@@ -107,7 +109,7 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
       const std::size_t e = edge[std::size_t(id - segments.begin())];
       const double in = length_in_ball(points[g.ends[e][0]], points[g.ends[e][1]], m, r);
       if(angle[e] >= crease_angle) bound[i].crease += in;
-      else bound[i].band += in * band_weight(points[g.ends[e][1]] - points[g.ends[e][0]], t);
+      else bound[i].band += by_direction ? in * band_weight(points[g.ends[e][1]] - points[g.ends[e][0]], t) : in;
     }
   }
   return bound;
@@ -121,7 +123,8 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
 inline std::vector<std::size_t> candidates_near_band_edges(const Edge_geometry& g, const std::vector<double>& angle,
                                                            const std::vector<double>& band_angle,
                                                            double crease_angle,
-                                                           const std::vector<std::size_t>& candidates)
+                                                           const std::vector<std::size_t>& candidates,
+                                                         bool by_direction = true)
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef std::vector<K::Segment_3>::const_iterator Iterator;
@@ -154,7 +157,9 @@ constexpr std::size_t crease_gap_hierarchy_least_candidates = 512;
 
 // Drops the candidates (is_crease, from `angle`) that fail the gap test; `raw` are the
 // dihedral angles of the unfiltered normals, `raw_roughness` their roughness; a candidate
-// bending by `keep_from` degrees or more is kept untested (Crease_gap::strong_angle). Each
+// bending by `keep_from` degrees or more is kept untested (Crease_gap::strong_angle);
+// `by_direction`: the band edges weigh by band_weight() (on a tessellation with large
+// planar regions, detect_creases()), else their lengths count whole. Each
 // candidate's test reads the angles only, never is_crease, so the candidates are tested
 // independently: by TBB's threads if `parallel`, with the same result at any count.
 // Only the candidates near a band edge are searched (candidates_near_band_edges()), face
@@ -162,7 +167,8 @@ constexpr std::size_t crease_gap_hierarchy_least_candidates = 512;
 template <typename TriangleMesh, typename VPM>
 void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<double>& angle,
                            const std::vector<double>& raw, double raw_roughness, double crease_angle,
-                           std::vector<char>& is_crease, bool parallel = false, double keep_from = 360.)
+                           std::vector<char>& is_crease, bool parallel = false, double keep_from = 360.,
+                           bool by_direction = true)
 {
   std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < is_crease.size(); ++e)
@@ -175,11 +181,13 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
   // of all the crease length within the ball, or all the band length within the ball is
   // below the share of the crease it found (the sums only grow; a relative margin of 1e-9
   // covers the order of the additions); the verdict is that of the whole search.
-  const std::vector<Gap_lengths> bound = crease_gap_length_bounds(geometry, angle, band_angle, crease_angle, searched);
+  const std::vector<Gap_lengths> bound =
+    crease_gap_length_bounds(geometry, angle, band_angle, crease_angle, searched, by_direction);
   const double ratio = Crease_gap::ratio, margin = 1 + 1e-9;
   const std::vector<Gap_lengths> lengths =
     crease_gap_lengths(idx, std::move(geometry), angle, band_angle, crease_angle, searched, parallel,
-                       searched.size() >= crease_gap_hierarchy_least_candidates ? 8 : 0, [&](std::size_t i) {
+                       searched.size() >= crease_gap_hierarchy_least_candidates ? 8 : 0, by_direction,
+                       [&](std::size_t i) {
                          const Gap_lengths b = bound[i];
                          return [b, ratio, margin](const Gap_lengths& s) {
                            return s.band > ratio * b.crease * margin || b.band * margin < ratio * s.crease;
