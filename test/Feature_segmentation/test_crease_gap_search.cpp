@@ -273,7 +273,8 @@ BOOST_AUTO_TEST_CASE(only_candidates_near_band_edges_are_searched)
 //   the band) and flat ends: the rulings run across the ends' 90-degree ring edges
 //   (cosine 0), so the band of every ring edge's ball is 0 though its rulings' length
 //   there exceeds half the ring's: the 40 ring edges pass the test, with no exception for
-//   strong bends (keep_from 360).
+//   strong bends (keep_from 360). Counted whole (by_direction false, as on a smooth
+//   model), the rulings make the ring edges fail.
 // - A tube of 20 facets with one ruling pushed out to bend by 29 degrees: its candidates
 //   run along the band rulings (cosine 1), which count whole, and it fails the test.
 BOOST_AUTO_TEST_CASE(band_edges_weigh_by_the_squared_cosine_of_their_angle)
@@ -316,9 +317,12 @@ BOOST_AUTO_TEST_CASE(band_edges_weigh_by_the_squared_cosine_of_their_angle)
           BOOST_TEST(lengths[i].band == band, boost::test_tools::tolerance(1e-9));
       }
     }
+    std::vector<char> whole = is_crease; // the band counted whole (by_direction false)
     FS::internal::keep_creases_with_gap(idx, vpm, angle, angle, 0., 20., is_crease, false);
     const std::size_t kept = std::size_t(std::count(is_crease.begin(), is_crease.end(), char(1)));
     BOOST_TEST(kept == (m == &rod ? 40u : 0u));
+    FS::internal::keep_creases_with_gap(idx, vpm, angle, angle, 0., 20., whole, false, 360., false);
+    BOOST_TEST(std::count(whole.begin(), whole.end(), char(1)) == 0); // the rod's ends too fail
   }
 }
 

@@ -123,8 +123,7 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
 inline std::vector<std::size_t> candidates_near_band_edges(const Edge_geometry& g, const std::vector<double>& angle,
                                                            const std::vector<double>& band_angle,
                                                            double crease_angle,
-                                                           const std::vector<std::size_t>& candidates,
-                                                         bool by_direction = true)
+                                                           const std::vector<std::size_t>& candidates)
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef std::vector<K::Segment_3>::const_iterator Iterator;
