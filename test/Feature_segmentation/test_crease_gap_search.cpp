@@ -80,6 +80,44 @@ SM fandisk_subdivided_once()
   return fs_test::to_mesh<SM>(s);
 }
 
+// A tube of 20 facets round (they bend by 18 degrees, the band at 20), 4 long, one of
+// whose rulings is pushed out to bend by 29 degrees.
+SM tube_with_one_ruling_pushed_out()
+{
+  return fs_test::to_mesh<SM>(fs_test::parametric_grid(20, 4, true, false, [](double u, double v) {
+    const double a = 2 * 3.14159265358979323846 * u, r = u < 1e-9 ? 1.03 : 1.;
+    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), 4 * v };
+  }));
+}
+
+// The crease candidates at 20 degrees (edges bending by that much or more), also marked
+// 1 in `is_crease`.
+std::vector<std::size_t> crease_candidates(const std::vector<double>& angle, std::vector<char>& is_crease)
+{
+  std::vector<std::size_t> candidates;
+  is_crease.assign(angle.size(), 0);
+  for(std::size_t e = 0; e < angle.size(); ++e)
+    if(angle[e] >= 20) { candidates.push_back(e); is_crease[e] = 1; }
+  return candidates;
+}
+
+// What the gap test reads of a mesh (its raw angles, its edge geometry) and its crease
+// candidates at 20 degrees (crease_candidates()).
+struct Gap_inputs
+{
+  Indexing idx;
+  std::vector<double> angle;
+  FS::internal::Edge_geometry geometry;
+  std::vector<char> is_crease;
+  std::vector<std::size_t> candidates;
+
+  explicit Gap_inputs(const SM& m)
+    : idx(m), angle(raw_angles(idx, m)), geometry(FS::internal::edge_geometry(idx, get(CGAL::vertex_point, m)))
+  {
+    candidates = crease_candidates(angle, is_crease);
+  }
+};
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(crease_gap_search)
@@ -143,46 +181,40 @@ BOOST_AUTO_TEST_CASE(clusters_give_the_lengths_of_the_face_search_on_fandisk)
 BOOST_AUTO_TEST_CASE(searches_end_once_their_verdict_is_sure)
 {
   const SM fandisk = fandisk_subdivided_once();
-  const SM tube = fs_test::to_mesh<SM>(fs_test::parametric_grid(20, 4, true, false, [](double u, double v) {
-    const double a = 2 * 3.14159265358979323846 * u, r = u < 1e-9 ? 1.03 : 1.;
-    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), 4 * v };
-  }));
+  const SM tube = tube_with_one_ruling_pushed_out();
   std::size_t total_kept = 0, total_dropped = 0, total_early = 0;
   for(const SM* m : { &fandisk, &tube })
   {
-    const Indexing idx(*m);
-    const std::vector<double> angle = raw_angles(idx, *m);
+    const Gap_inputs in(*m);
     const auto vpm = get(CGAL::vertex_point, *m);
-    const FS::internal::Edge_geometry geometry = FS::internal::edge_geometry(idx, vpm);
-    std::vector<std::size_t> candidates;
-    std::vector<char> is_crease(angle.size(), 0);
-    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-      if(angle[e] >= 20) { candidates.push_back(e); is_crease[e] = 1; }
-    const auto full = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false);
-    const auto bound = FS::internal::crease_gap_length_bounds(geometry, angle, angle, 20., candidates);
+    std::vector<char> is_crease = in.is_crease;
+    const auto full =
+      FS::internal::crease_gap_lengths(in.idx, in.geometry, in.angle, in.angle, 20., in.candidates, false);
+    const auto bound = FS::internal::crease_gap_length_bounds(in.geometry, in.angle, in.angle, 20., in.candidates);
     std::size_t below_bound = 0, early = 0;
-    for(std::size_t i = 0; i < candidates.size(); ++i)
+    for(std::size_t i = 0; i < in.candidates.size(); ++i)
     {
       const double tol = 1e-9 * (1 + bound[i].crease + bound[i].band);
       below_bound += full[i].crease <= bound[i].crease + tol && full[i].band <= bound[i].band + tol;
     }
-    BOOST_TEST(below_bound == candidates.size());
+    BOOST_TEST(below_bound == in.candidates.size());
     // the searches that end early find less than the whole search
-    const auto partial = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false, 8, true,
+    const auto partial = FS::internal::crease_gap_lengths(in.idx, in.geometry, in.angle, in.angle, 20., in.candidates,
+                                                          false, 8, true,
                                                           [&](std::size_t i) {
       const FS::internal::Gap_lengths b = bound[i];
       return [b](const FS::internal::Gap_lengths& l) {
         return l.band > 0.5 * b.crease * (1 + 1e-9) || b.band * (1 + 1e-9) < 0.5 * l.crease;
       };
     });
-    for(std::size_t i = 0; i < candidates.size(); ++i)
+    for(std::size_t i = 0; i < in.candidates.size(); ++i)
       early += partial[i].crease + partial[i].band < full[i].crease + full[i].band;
-    FS::internal::keep_creases_with_gap(idx, vpm, angle, angle, 0., 20., is_crease, false);
+    FS::internal::keep_creases_with_gap(in.idx, vpm, in.angle, in.angle, 0., 20., is_crease, false);
     std::size_t wrong = 0;
-    for(std::size_t i = 0; i < candidates.size(); ++i)
+    for(std::size_t i = 0; i < in.candidates.size(); ++i)
     {
       const bool drop = full[i].band > FS::internal::Crease_gap::ratio * full[i].crease;
-      wrong += (is_crease[candidates[i]] != 0) == drop;
+      wrong += (is_crease[in.candidates[i]] != 0) == drop;
       (drop ? total_dropped : total_kept) += 1;
     }
     BOOST_TEST(wrong == 0u);
@@ -281,35 +313,28 @@ BOOST_AUTO_TEST_CASE(band_edges_weigh_by_the_squared_cosine_of_their_angle)
 {
   std::vector<int> side;
   const SM rod = fs_test::to_mesh<SM>(fs_test::closed_rod([](double, double) { return 1.; }, 40., 20, 80, side));
-  const SM tube = fs_test::to_mesh<SM>(fs_test::parametric_grid(20, 4, true, false, [](double u, double v) {
-    const double a = 2 * 3.14159265358979323846 * u, r = u < 1e-9 ? 1.03 : 1.;
-    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), 4 * v };
-  }));
+  const SM tube = tube_with_one_ruling_pushed_out();
   for(const SM* m : { &rod, &tube })
   {
-    const Indexing idx(*m);
-    const std::vector<double> angle = raw_angles(idx, *m);
+    const Gap_inputs in(*m);
     const auto vpm = get(CGAL::vertex_point, *m);
-    const FS::internal::Edge_geometry geometry = FS::internal::edge_geometry(idx, vpm);
-    std::vector<std::size_t> candidates;
-    std::vector<char> is_crease(angle.size(), 0);
-    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-      if(angle[e] >= 20) { candidates.push_back(e); is_crease[e] = 1; }
-    BOOST_REQUIRE(candidates.size() == (m == &rod ? 40u : 4u));
-    const double r = FS::internal::Crease_gap_search<SM>(idx, geometry, angle, angle, 20.).radius();
+    std::vector<char> is_crease = in.is_crease;
+    BOOST_REQUIRE(in.candidates.size() == (m == &rod ? 40u : 4u));
+    const double r = FS::internal::Crease_gap_search<SM>(in.idx, in.geometry, in.angle, in.angle, 20.).radius();
     for(int levels : { 0, 8 })
     {
-      const auto lengths = FS::internal::crease_gap_lengths(idx, geometry, angle, angle, 20., candidates, false, levels);
-      for(std::size_t i = 0; i < candidates.size(); ++i)
+      const auto lengths =
+        FS::internal::crease_gap_lengths(in.idx, in.geometry, in.angle, in.angle, 20., in.candidates, false, levels);
+      for(std::size_t i = 0; i < in.candidates.size(); ++i)
       {
         // every band edge in the ball, unweighted (the ball's surface is connected here)
-        const auto& ends = geometry.ends[candidates[i]];
-        const Eigen::Vector3d c = 0.5 * (geometry.points[ends[0]] + geometry.points[ends[1]]);
+        const auto& ends = in.geometry.ends[in.candidates[i]];
+        const Eigen::Vector3d c = 0.5 * (in.geometry.points[ends[0]] + in.geometry.points[ends[1]]);
         double band = 0;
-        for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-          if(FS::internal::is_crease_gap_band_edge(angle[e], angle[e], 20.))
-            band += FS::internal::length_in_ball(geometry.points[geometry.ends[e][0]],
-                                                 geometry.points[geometry.ends[e][1]], c, r);
+        for(std::size_t e = 0; e < in.idx.number_of_edges(); ++e)
+          if(FS::internal::is_crease_gap_band_edge(in.angle[e], in.angle[e], 20.))
+            band += FS::internal::length_in_ball(in.geometry.points[in.geometry.ends[e][0]],
+                                                 in.geometry.points[in.geometry.ends[e][1]], c, r);
         BOOST_TEST(band > FS::internal::Crease_gap::ratio * lengths[i].crease);
         if(m == &rod)
           BOOST_TEST(lengths[i].band <= 1e-12 * band);
@@ -318,10 +343,10 @@ BOOST_AUTO_TEST_CASE(band_edges_weigh_by_the_squared_cosine_of_their_angle)
       }
     }
     std::vector<char> whole = is_crease; // the band counted whole (by_direction false)
-    FS::internal::keep_creases_with_gap(idx, vpm, angle, angle, 0., 20., is_crease, false);
+    FS::internal::keep_creases_with_gap(in.idx, vpm, in.angle, in.angle, 0., 20., is_crease, false);
     const std::size_t kept = std::size_t(std::count(is_crease.begin(), is_crease.end(), char(1)));
     BOOST_TEST(kept == (m == &rod ? 40u : 0u));
-    FS::internal::keep_creases_with_gap(idx, vpm, angle, angle, 0., 20., whole, false, 360., false);
+    FS::internal::keep_creases_with_gap(in.idx, vpm, in.angle, in.angle, 0., 20., whole, false, 360., false);
     BOOST_TEST(std::count(whole.begin(), whole.end(), char(1)) == 0); // the rod's ends too fail
   }
 }
