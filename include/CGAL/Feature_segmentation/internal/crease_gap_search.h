@@ -36,11 +36,12 @@ namespace internal {
 // surface: within the ball around a candidate edge's midpoint (radius `radius` of the
 // diagonal, at least two mean edge lengths), on the surface reached from the candidate,
 // the edges bending by [band * crease_angle, crease_angle), each weighted by the
-// squared cosine of its angle with the candidate (band_weight()), may have at most
-// `ratio` times the length of the candidates. A CAD tessellation leaves a gap below its creases
-// (on the 14 parts of the evaluation, no edge between 15 and 30 degrees apart from the
-// creases); a coarse or scanned smooth surface bends by every angle, so its strong bends
-// come with as many slightly weaker ones around them.
+// squared cosine of its angle with the candidate on a tessellation with large planar
+// regions (band_weight()), may have at most `ratio` times the length of the
+// candidates. A CAD tessellation leaves a gap below its creases (on the 14 parts of the
+// evaluation, no edge between 15 and 30 degrees apart from the creases); a coarse or
+// scanned smooth surface bends by every angle, so its strong bends come with as many
+// slightly weaker ones around them.
 struct Crease_gap
 {
   static constexpr double band = 0.75, ratio = 0.5, radius = 0.05;
@@ -220,7 +221,8 @@ public:
   Crease_gap_search(const Mesh_indexing<TriangleMesh>& idx, Edge_geometry geometry, const std::vector<double>& angle,
                     const std::vector<double>& band_angle, double crease_angle, int max_levels = 8,
                     bool by_direction = true)
-    : m_idx(idx), m_crease_angle(crease_angle), m_by_direction(by_direction), m_points(std::move(geometry.points)), m_ends(std::move(geometry.ends))
+    : m_idx(idx), m_crease_angle(crease_angle), m_by_direction(by_direction), m_points(std::move(geometry.points)),
+      m_ends(std::move(geometry.ends))
   {
     const TriangleMesh& tm = idx.mesh();
     const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
