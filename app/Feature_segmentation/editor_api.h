@@ -229,11 +229,14 @@ public:
     std::lock_guard<std::mutex> lock(m_mutex);
     const Pipeline& p = m_run->pipeline;
     nlohmann::json ridges = nlohmann::json::array(), valleys = nlohmann::json::array(),
-                   user = nlohmann::json::array();
+                   seams = nlohmann::json::array(), user = nlohmann::json::array();
     for(const auto& line : p.segmentation->feature_lines().lines)
-      (line.type == FS::Feature_line_type::RIDGE ? ridges
-       : line.type == FS::Feature_line_type::VALLEY ? valleys : user).push_back(p.line_coordinates(line));
-    return nlohmann::json{{"ridges", ridges}, {"valleys", valleys}, {"user", user}, {"creases", p.crease_segments()}}
+      (line.type == FS::Feature_line_type::RIDGE    ? ridges
+       : line.type == FS::Feature_line_type::VALLEY ? valleys
+       : line.type == FS::Feature_line_type::SEAM   ? seams
+                                                    : user).push_back(p.line_coordinates(line));
+    return nlohmann::json{{"ridges", ridges}, {"valleys", valleys}, {"seams", seams}, {"user", user},
+                          {"creases", p.crease_segments()}}
       .dump();
   }
 

@@ -143,8 +143,7 @@ public:
       py::array_t<double> a({py::ssize_t(xyz.size() / 3), py::ssize_t(3)});
       std::copy(xyz.begin(), xyz.end(), a.mutable_data());
       py::dict d;
-      d["kind"] = line.type == FS::Feature_line_type::RIDGE ? "ridge"
-                  : line.type == FS::Feature_line_type::VALLEY ? "valley" : "user";
+      d["kind"] = FS::internal::feature_line_type_name(line.type);
       d["points"] = a;
       d["closed"] = line.is_closed;
       lines.append(d);

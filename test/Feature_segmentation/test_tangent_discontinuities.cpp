@@ -11,10 +11,12 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include "crease_meshes.h"
 #include "fandisk_reference.h"
 #include "test_meshes.h"
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -90,9 +92,122 @@ void corner_is_floor_fillet_and_wall(const fs_test::Soup& s, std::size_t tangent
   BOOST_TEST(pairs.size() == 3u); // each face on its own side of both tangent lines
 }
 
+// A round rod of radius 1 bent by a quarter turn: a straight cylinder of length 6 along
+// z, a quarter torus (the bend's radius 4) and a second cylinder of length 6 along x,
+// each meeting the next tangentially, 32 facets round, with flat ends. `side` gets the
+// part of every face: 0 and 2 the cylinders, 1 the torus, 3 and 4 the ends.
+const double rod_radius = 1., bend_radius = 4., straight_length = 6.;
+fs_test::Soup bent_rod(std::vector<int>& side)
+{
+  const int around = 32, straight_rings = 12, bend_rings = 16;
+  fs_test::Soup s;
+  std::vector<int> ring_part; // per ring interval
+  // the rings: centre, the in-plane normal N (the y axis is the other direction)
+  auto add_ring = [&](const std::array<double, 3>& c, const std::array<double, 3>& n) {
+    for(int i = 0; i < around; ++i)
+    {
+      const double a = 2 * pi * i / around, cn = rod_radius * std::cos(a), sn = rod_radius * std::sin(a);
+      s.points.push_back({ c[0] + cn * n[0], c[1] + sn, c[2] + cn * n[2] });
+    }
+  };
+  for(int j = 0; j <= straight_rings; ++j)
+    add_ring({ 0., 0., straight_length * j / straight_rings }, { 1., 0., 0. });
+  for(int j = 1; j <= bend_rings; ++j)
+  {
+    const double phi = 0.5 * pi * j / bend_rings;
+    add_ring({ bend_radius * (1 - std::cos(phi)), 0., straight_length + bend_radius * std::sin(phi) },
+             { std::cos(phi), 0., -std::sin(phi) });
+  }
+  for(int j = 1; j <= straight_rings; ++j)
+    add_ring({ bend_radius + straight_length * j / straight_rings, 0., straight_length + bend_radius }, { 0., 0., -1. });
+  const int rings = 2 * straight_rings + bend_rings + 1;
+  for(int j = 0; j + 1 < rings; ++j) ring_part.push_back(j < straight_rings ? 0 : j < straight_rings + bend_rings ? 1 : 2);
+  const std::size_t first_end = s.points.size();
+  s.points.push_back({ 0., 0., 0. });
+  s.points.push_back({ bend_radius + straight_length, 0., straight_length + bend_radius });
+  auto at = [&](int i, int j) { return std::size_t(j * around + (i % around)); };
+  side.clear();
+  for(int j = 0; j + 1 < rings; ++j)
+    for(int i = 0; i < around; ++i)
+    {
+      s.faces.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      s.faces.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+      side.insert(side.end(), { ring_part[j], ring_part[j] });
+    }
+  for(int i = 0; i < around; ++i)
+  {
+    s.faces.push_back({ first_end, at(i + 1, 0), at(i, 0) });
+    s.faces.push_back({ first_end + 1, at(i, rings - 1), at(i + 1, rings - 1) });
+    side.insert(side.end(), { 3, 4 });
+  }
+  return s;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(tangent_discontinuities)
+
+// The bent rod: no edge of its side bends by 20 degrees (11.25 round, 5.6 along the
+// bend), and its cylinders and torus are tessellated alike, in flat quadrilaterals, so
+// no flat region tells them apart; where they meet, k2 (0 on a cylinder, cos(t) / (4 +
+// cos(t)) on the torus at the angle t from the bend's outside) jumps by up to 0.2 of k1
+// (1). Seam lines run along both seam circles, except where the bend's sides leave k2
+// continuous, and the segmentation closes them: the rod is its five faces. Without
+// tangent discontinuities it is its ends and its side.
+BOOST_AUTO_TEST_CASE(a_bent_rod_is_cut_at_its_seam_lines)
+{
+  std::vector<int> side;
+  const SM m = fs_test::to_mesh<SM>(bent_rod(side));
+  BOOST_REQUIRE(CGAL::is_closed(m) && CGAL::is_triangle_mesh(m));
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  BOOST_TEST(seg.number_of_crease_edges() == 64u); // the two ends
+  std::size_t seams = 0;
+  for(const auto& line : seg.feature_lines().lines)
+  {
+    if(line.type != FS::Feature_line_type::SEAM) continue;
+    ++seams;
+    for(const auto& p : line.points)
+    {
+      // on the first seam circle (z = 6) or the second (x = 4), within two rings
+      const auto q = p.point(seg.working_mesh(), seg.working_mesh().points());
+      BOOST_TEST((std::min)(std::abs(q.z() - straight_length), std::abs(q.x() - bend_radius)) < 1.);
+    }
+  }
+  BOOST_TEST(seams >= 2u);
+  BOOST_TEST(seg.number_of_patches() == 5u);
+  // each side is mostly one patch of its own; the boundaries follow the seam circles to
+  // within two rings (0.5 long along the cylinders, 0.39 along the torus): the faces of a
+  // side outside its patch lie within 1 of a seam circle's plane, and they are few
+  std::map<std::pair<int, std::size_t>, std::size_t> count; // (side, patch) -> faces
+  std::size_t i = 0;
+  for(auto f : faces(m)) ++count[{ side[i++], seg.patch(f) }];
+  std::map<int, std::size_t> main_patch;
+  for(int k = 0; k < 5; ++k)
+  {
+    std::size_t best = 0;
+    for(const auto& c : count)
+      if(c.first.first == k && c.second > best) { best = c.second; main_patch[k] = c.first.second; }
+  }
+  std::set<std::size_t> distinct;
+  for(const auto& p : main_patch) distinct.insert(p.second);
+  BOOST_TEST(distinct.size() == 5u);
+  std::size_t outside = 0;
+  i = 0;
+  for(auto f : faces(m))
+  {
+    const int k = side[i++];
+    if(seg.patch(f) == main_patch[k]) continue;
+    ++outside;
+    double x = 0, z = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) { x += m.point(v).x() / 3; z += m.point(v).z() / 3; }
+    BOOST_TEST((std::min)(std::abs(z - straight_length), std::abs(x - bend_radius)) < 1.);
+  }
+  BOOST_TEST(outside < num_faces(m) / 50);
+
+  FS::Feature_aligned_segmentation<SM> without(m, FS::parameters::tangent_discontinuities(false));
+  for(const auto& line : without.feature_lines().lines) BOOST_TEST((line.type != FS::Feature_line_type::SEAM));
+  BOOST_TEST(without.number_of_patches() == 3u);
+}
 
 BOOST_AUTO_TEST_CASE(filleted_corner_is_its_three_faces_at_two_resolutions)
 {

@@ -123,6 +123,7 @@ public:
       const bool strong = l.strength >= FS::default_strong_feature_strength;
       const bool ridge = l.type == FS::Feature_line_type::RIDGE;
       const char* colour = ridge ? (strong ? "d01010" : "f08080") : (strong ? "1030d0" : "80a0f0");
+      if(l.type == FS::Feature_line_type::SEAM) colour = "10a010";
       if(l.type == FS::Feature_line_type::USER) colour = "101010";
       const std::size_t m = l.is_closed ? l.points.size() : (l.points.empty() ? 0 : l.points.size() - 1);
       for(std::size_t i = 0; i < m; ++i)

@@ -183,11 +183,12 @@ async function loadFeatures() {
   const f = await api('/api/features');
   if (generation !== featureLoads) return;
   overlays.lines.clear();
-  const ridges = new THREE.Group(), valleys = new THREE.Group(), user = new THREE.Group();
+  const ridges = new THREE.Group(), valleys = new THREE.Group(), seams = new THREE.Group(), user = new THREE.Group();
   polylines(f.ridges, 0xd62728, ridges);
   polylines(f.valleys, 0x1f5bd6, valleys);
+  polylines(f.seams, 0x2ca02c, seams);
   polylines(f.user, 0xff00ff, user);
-  overlays.lines.add(ridges, valleys, user);
+  overlays.lines.add(ridges, valleys, seams, user);
   overlays.creases.clear();
   if (f.creases.length) {
     const g = new THREE.BufferGeometry();

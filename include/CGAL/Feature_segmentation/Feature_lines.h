@@ -24,7 +24,9 @@ enum class Feature_line_type
 {
   RIDGE,  ///< a maximum of `k_max` along its direction, with `k_max > |k_min|`
   VALLEY, ///< a minimum of `k_min` along its direction, with `k_min < -|k_max|`
-  USER    ///< given by the user (a polyline file, a sketch)
+  USER,   ///< given by the user (a polyline file, a sketch)
+  SEAM    ///< where two curved faces of a CAD part meet without a crease: a maximum, along
+          ///< the direction of `k2`, of the derivative of `k2` (a cylinder running into a torus)
 };
 
 /// \ingroup PkgFeatureSegmentationFeatureLines

@@ -53,6 +53,9 @@ struct Segmentation_options
   // set by the class, not by a parameter: whether prepare_segmentation_data detects
   // crest lines when no feature is given
   bool detect_crest_lines = true;
+  // set by the class: prepare_segmentation_data adds seam lines (internal/seam_lines.h)
+  // to the detected crest lines (a clean CAD tessellation, with tangent_discontinuities)
+  bool detect_seam_lines = false;
 
   void check() const
   {
@@ -179,6 +182,7 @@ public:
   std::shared_ptr<const std::vector<Triangle_metric> > metrics;
   Edge_vertex_list edge_vertices;        // per edge (and crease tie)
   Feature_terms features;               // the feature edges and points, the terms
+  std::vector<char> is_seam_edge;        // per edge: crossed by a seam line (empty without them)
 };
 
 } // namespace internal

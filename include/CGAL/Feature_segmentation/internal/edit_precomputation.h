@@ -169,6 +169,8 @@ private:
     // the full alpha, as the paper)
     const bool weak_crests = cut.cad && !opt.crest_lines_on_clean_tessellations &&
                              is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value;
+    // on a clean one, the seam lines join them, weighing alpha + Seam_thresholds::alpha_offset
+    o.detect_seam_lines = weak_crests && cut.clean && opt.tangent_discontinuities;
     const Mesh_indexing<TriangleMesh>& in = *input_idx;
     const Mesh_indexing<TriangleMesh>& wi = d.idx;
     auto wvpm = get_const_property_map(CGAL::vertex_point, wm);
@@ -234,7 +236,10 @@ private:
         if(!d.features.is_feature_edge[e]) continue;
         if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
           if(get(get_parameter(np, internal_np::edge_is_feature), in.edge_at(cut.input_edge[e]))) continue;
-        a[e] -= clean_crest_alpha_offset;
+        if(!d.is_seam_edge.empty() && d.is_seam_edge[e])
+          a[e] += Seam_thresholds::alpha_offset;
+        else
+          a[e] -= clean_crest_alpha_offset;
       }
     first_tie = d.edge_vertices.size();
     {

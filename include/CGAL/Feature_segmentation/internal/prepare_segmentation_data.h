@@ -10,6 +10,7 @@
 #include <CGAL/Feature_segmentation/crest_lines.h>
 #include <CGAL/Feature_segmentation/principal_curvatures.h>
 #include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
+#include <CGAL/Feature_segmentation/internal/seam_lines.h>
 #include <CGAL/Feature_segmentation/internal/stage_times.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -88,6 +89,15 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
     {
       if(opt.detect_crest_lines) lines_out = detect_crest_lines(data.idx, vpm, cmap, read_crest_options(np));
       else lines_out.lines.clear();
+      data.is_seam_edge.clear();
+      if(opt.detect_seam_lines)
+      {
+        Feature_lines<TriangleMesh> seams = detect_seam_lines(data.idx, vpm, cmap);
+        data.is_seam_edge.assign(data.idx.number_of_edges(), 0);
+        for(const auto& l : seams.lines)
+          for(const auto& fp : l.points) data.is_seam_edge[data.idx.edge_id(fp.halfedge)] = 1;
+        for(auto& l : seams.lines) lines_out.lines.push_back(std::move(l));
+      }
       mark_feature_edges(tm, lines_out, own_features);
       data.set_features(own_features, lines_out);
     }

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Seam lines: where two curved faces of a CAD part meet without a crease and the smaller
+// principal curvature jumps (a cylinder running into a torus along a bent pipe, into a
+// sphere or a corner blend), which neither the dihedral angles nor the flat regions of
+// the curvature discontinuities (tangent_discontinuities.h) see. The fitted k2 (the
+// principal curvature of smaller magnitude) steps there over the width of the fit, so
+// the derivative of k2 along its own direction, dk2, peaks on the seam and is about zero
+// on either side (a cylinder, a torus and a sphere have dk2 = 0: k2 is constant along its
+// lines of curvature). A seam line is a ridge of the jump q = |dk2| h / |k1| (the change
+// of k2 across the fit's width h, relative to the larger curvature) along the direction
+// of k2: the crest-line detector of crest_lines_impl.h run on q, its derivative along d2
+// and d2.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_SEAM_LINES_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_SEAM_LINES_H
+
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/crest_lines_impl.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+// The constants of the seam lines, chosen on the development and generated parts
+// (evaluate_quality --only cad, clean; manual, Creases). They are relative: the jump to
+// the larger curvature, lengths to the bounding box's diagonal.
+struct Seam_thresholds
+{
+  // The width h over which the fit spreads a jump: 1% of the diagonal (the fit radius),
+  // or `edges` mean edge lengths if more (two rings set the fit's scale on a coarse mesh).
+  static constexpr double width = 0.01, edges = 2.;
+  // The least jump q at a point of a seam line: the jump of a bent pipe's k2 is 0.13 to
+  // 0.22 of its k1 where the pipe bends most and falls to zero where it bends least, so
+  // a seam line ends there and the correlation clustering closes the loop.
+  static constexpr double least_jump = 0.03;
+  // The least strength of a seam line (the integral of q along it) and its least length,
+  // in diagonals: the fit's fragments near creases and on freeform faces are short. At
+  // half the strength ABC 00004493 (a long rod) is cut by spurious lines (F 1.0 -> 0.86);
+  // without the length, CGAL's couplingdown gives 99 patches instead of 79.
+  static constexpr double least_strength = 0.004, least_length = 0.02;
+  // alpha_e of a seam line's edges: alpha plus this. A seam runs along the larger
+  // curvature, so the dual edges that cross it run along the smaller one, where the
+  // anisotropic metric measures the Euclidean length: Similarity equals Award and only
+  // alpha_e > 1 makes cutting them pay (at alpha 0.6 + 0.5 the bent pipe's inner seams
+  // stay whole).
+  static constexpr double alpha_offset = 1.0;
+};
+
+// The seam lines of the mesh of `idx` (Feature_line_type::SEAM, strongest first): `vpm`
+// its points, `curvature` its principal curvatures (a vertex property map of
+// Principal_curvatures).
+template <typename TriangleMesh, typename VPM, typename CurvatureMap>
+Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
+                                              CurvatureMap curvature)
+{
+  typedef Seam_thresholds Limits;
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces(), ne = idx.number_of_edges();
+  Feature_lines<TriangleMesh> out;
+  if(nv == 0 || nf == 0) return out;
+  std::vector<Eigen::Vector3d> points(nv);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    const auto& p = get(vpm, idx.vertex_at(i));
+    points[i] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    lo = lo.cwiseMin(points[i]);
+    hi = hi.cwiseMax(points[i]);
+  }
+  const double diagonal = (hi - lo).norm();
+  if(!(diagonal > 0)) return out;
+  double mean_edge = 0;
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    mean_edge += (points[idx.id(source(h, tm))] - points[idx.id(target(h, tm))]).norm();
+  }
+  mean_edge /= double((std::max)(ne, std::size_t(1)));
+  const double width = (std::max)(Limits::width * diagonal, Limits::edges * mean_edge);
+
+  // the jump q and the direction of k2 per vertex
+  std::vector<Crest_vertex_data> data(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    const auto& c = get(curvature, idx.vertex_at(i));
+    const double k1 = (std::max)(std::abs(CGAL::to_double(c.k1)), 1. / diagonal);
+    const double q = std::abs(CGAL::to_double(c.dk2)) * width / k1;
+    data[i].k = std::isfinite(q) ? q : 0.;
+    data[i].t = Eigen::Vector3d(CGAL::to_double(c.d2.x()), CGAL::to_double(c.d2.y()), CGAL::to_double(c.d2.z()));
+  }
+  // the derivative of q along d2: the gradient of q linear over each face, averaged over
+  // the faces round each vertex by area
+  std::vector<Eigen::Vector3d> gradient(nv, Eigen::Vector3d::Zero());
+  std::vector<double> weight(nv, 0.);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    std::array<std::size_t, 3> v = { 0, 0, 0 };
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      v[k++] = idx.id(target(h, tm));
+      if(k == 3) break;
+    }
+    const Eigen::Vector3d &a = points[v[0]], &b = points[v[1]], &c = points[v[2]];
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    const double twice_area = n.norm();
+    if(!(twice_area > 0)) continue;
+    const Eigen::Vector3d u = n / twice_area;
+    // the gradient of the linear interpolant, times twice the area
+    const Eigen::Vector3d g =
+      data[v[0]].k * u.cross(c - b) + data[v[1]].k * u.cross(a - c) + data[v[2]].k * u.cross(b - a);
+    for(std::size_t x : v)
+    {
+      gradient[x] += 0.5 * g;          // area times the gradient
+      weight[x] += 0.5 * twice_area;
+    }
+  }
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    data[i].e = weight[i] > 0 ? gradient[i].dot(data[i].t) / weight[i] : 0.;
+    // a point below the least jump is no seam: its crossings fail the ridge test (k > 0)
+    if(data[i].k < Limits::least_jump) data[i].k = 0.;
+  }
+  Crest_options options;
+  options.strength_threshold = Limits::least_strength * diagonal;
+  options.umbilic_ratio = 0.; // k_other is 0: the test is k > 0
+  Crest_line_detector<TriangleMesh> detector(idx, points);
+  Feature_lines<TriangleMesh> found;
+  detector.detect(Feature_line_type::RIDGE, data, options, found); // the maxima of q
+  for(auto& l : found.lines)
+    if(l.length >= Limits::least_length * diagonal)
+    {
+      l.type = Feature_line_type::SEAM;
+      out.lines.push_back(std::move(l));
+    }
+  detector.sort_lines(out);
+  return out;
+}
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_SEAM_LINES_H
