@@ -9,7 +9,12 @@
 // lines of curvature). A seam line is a ridge of the jump q = |dk2| h / |k1| (the change
 // of k2 across the fit's width h, relative to the larger curvature) along the direction
 // of k2: the crest-line detector of crest_lines_impl.h run on q, its derivative along d2
-// and d2.
+// and d2. A point keeps its jump only where it is a step between two faces: q low and k2
+// steady at some distance on both sides along d2, and the two sides' k2 apart. A blip
+// is no seam: the fits of a coarse tessellation subdivided flat see its facets, and
+// their dk2 peaks along every facet edge with the same k2 on both sides. The pipeline
+// looks for seam lines on clean CAD tessellations only (edit_precomputation.h): a noisy
+// mesh's fitted k2 is steady nowhere.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_SEAM_LINES_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_SEAM_LINES_H
@@ -41,27 +46,36 @@ struct Seam_thresholds
   static constexpr double width = 0.01, edges = 2.;
   // The least jump q at a point of a seam line: the jump of a bent pipe's k2 is 0.13 to
   // 0.22 of its k1 where the pipe bends most and falls to zero where it bends least, so
-  // a seam line ends there and the correlation clustering closes the loop.
-  static constexpr double least_jump = 0.03;
+  // a seam line ends there and the correlation clustering closes the loop. The windows
+  // below reject what a lower jump lets in: at 0.01 and at 0.02 the evaluation is the
+  // same; at 0.03 and 0.05 the bent pipes lose pieces of their inner seams (generated
+  // parts 0.976 -> 0.970 and 0.954).
+  static constexpr double least_jump = 0.02;
   // The least strength of a seam line (the integral of q along it) and its least length,
-  // in diagonals: the fit's fragments near creases and on freeform faces are short. At
-  // half the strength ABC 00004493 (a long rod) is cut by spurious lines (F 1.0 -> 0.86);
-  // without the length, CGAL's couplingdown gives 99 patches instead of 79.
+  // in diagonals: the fit's fragments near creases and on freeform faces are short.
+  // Without the length, fandisk gets 27 patches and its flat subdivision 28 (26 with it);
+  // at twice the length, part 127460 loses seams (F 0.86 -> 0.80).
   static constexpr double least_strength = 0.004, least_length = 0.02;
   // alpha_e of a seam line's edges: alpha plus this. A seam runs along the larger
   // curvature, so the dual edges that cross it run along the smaller one, where the
   // anisotropic metric measures the Euclidean length: Similarity equals Award and only
-  // alpha_e > 1 makes cutting them pay (at alpha 0.6 + 0.5 the bent pipe's inner seams
-  // stay whole).
+  // alpha_e > 1 makes cutting them pay (at alpha 0.6 + 0.5 the bent pipes' inner seams
+  // stay whole: F 0.97 -> 0.78 and 0.94 -> 0.67).
   static constexpr double alpha_offset = 1.0;
   // The windows ahead of and behind a point of a seam line along d2: `away` widths from
   // it, one width long and one wide. Within them q must stay below `steady` times the
   // point's (the fits are steady on both faces), and the mean k2 must differ by
   // `least_step` times |k1| (a step, not a blip). Chosen on the development and generated
-  // parts with CGAL's fandisk and its flat subdivision into 16 (test_resolution.cpp):
-  // at 1 width or without the step, the subdivision gets 29 to 48 patches for 26; at a
-  // least step of 0.1 the bent pipes lose their inner seams (F 0.99 -> 0.78 to 0.87).
-  static constexpr double away = 1.5, steady = 0.5, least_step = 0.03;
+  // parts with CGAL's fandisk and its flat subdivision into 16 (test_resolution.cpp),
+  // whose fits see the coarse facets and whose dk2 peaks along each of them: without
+  // the windows the subdivision gets 272 patches for 26, at 1 width or without the step
+  // 29 to 48; at a least step of 0.1 the bent pipes lose their inner seams.
+  static constexpr double away = 1.5, steady = 0.5, least_step = 0.05;
+  // The least |k1| of a point of a seam line, times the diagonal: where the surface is
+  // nearly flat across as well as along (an inflection of a lobed section), the jump
+  // relative to |k1| means nothing (a rod with four lobes whose girth swells gets short
+  // seam lines along its inflections; none from 1.01 to 1.75).
+  static constexpr double least_curvature = 1.5;
   // The most vertices a window search visits (a bound on the work of one point).
   static constexpr std::size_t most_window_vertices = 4000;
 };
@@ -108,7 +122,7 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
     k1a[i] = k1;
     k2[i] = std::isfinite(CGAL::to_double(c.k2)) ? CGAL::to_double(c.k2) : 0.;
     const double q = std::abs(CGAL::to_double(c.dk2)) * width / k1;
-    data[i].k = std::isfinite(q) ? q : 0.;
+    data[i].k = std::isfinite(q) && k1 * diagonal >= Limits::least_curvature ? q : 0.;
     data[i].t = Eigen::Vector3d(CGAL::to_double(c.d2.x()), CGAL::to_double(c.d2.y()), CGAL::to_double(c.d2.z()));
   }
   // A seam is a step between two regions of steady k2 (the fits of a flat-subdivided
