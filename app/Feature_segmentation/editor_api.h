@@ -22,8 +22,8 @@
 //              uint32 patch per vertex (16 + 4 T + 4 V bytes); with &vertices=0, V is 0
 //              and the triangles' patches end it (what the page loads)
 //   history    ?from=K&count=N (N in 1 .. 1000): {"edit_count", "from", "edits": [lines]}
-//   features   {"ridges", "valleys", "user": [[x y z ...] per line], "creases": [x y z x y z
-//               per crease edge ...]}
+//   features   {"ridges", "valleys", "seam_lines", "user": [[x y z ...] per line],
+//               "creases": [x y z x y z per crease edge ...]}
 //   boundaries {"curves": [[x y z ...] per curve, closed ones repeat their first point],
 //               "smoothed", "length"}
 //   restart    {"radius": X, "strength_threshold": T}: the crest-line scale, recomputed;
@@ -235,7 +235,7 @@ public:
        : line.type == FS::Feature_line_type::VALLEY ? valleys
        : line.type == FS::Feature_line_type::SEAM   ? seams
                                                     : user).push_back(p.line_coordinates(line));
-    return nlohmann::json{{"ridges", ridges}, {"valleys", valleys}, {"seams", seams}, {"user", user},
+    return nlohmann::json{{"ridges", ridges}, {"valleys", valleys}, {"seam_lines", seams}, {"user", user},
                           {"creases", p.crease_segments()}}
       .dump();
   }

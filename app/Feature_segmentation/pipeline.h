@@ -197,13 +197,14 @@ public:
     const FS::Feature_lines<Mesh>& lines = segmentation->feature_lines();
     results.number_of_ridges = lines.number_of_lines(FS::Feature_line_type::RIDGE);
     results.number_of_valleys = lines.number_of_lines(FS::Feature_line_type::VALLEY);
+    results.number_of_seam_crossings = lines.number_of_lines(FS::Feature_line_type::SEAM);
     results.number_of_lines = lines.lines.size();
     results.number_of_feature_edges = segmentation->number_of_feature_edges();
     results.number_of_crease_edges = segmentation->number_of_crease_edges();
     if(!options.quiet)
       std::cerr << "feature lines: " << results.number_of_ridges << " ridges, "
-                << results.number_of_valleys << " valleys, " << results.number_of_user_lines
-                << " user; " << results.number_of_crease_edges << " crease edges; "
+                << results.number_of_valleys << " valleys, " << results.number_of_seam_crossings
+                << " seam lines, " << results.number_of_user_lines << " user; " << results.number_of_crease_edges << " crease edges; "
                 << results.number_of_feature_edges << " feature edges" << std::endl;
     results.solver_seconds = last_solver_seconds;
     results.segmentation_stages = segmentation->stage_times();

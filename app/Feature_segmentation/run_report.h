@@ -135,6 +135,7 @@ struct Results
   std::size_t number_of_lines = 0;
   std::size_t number_of_crease_lines = 0;  // polylines of feature_lines.* typed "crease"
   std::size_t number_of_seam_lines = 0;    // ... typed "seam" (curvature discontinuities)
+  std::size_t number_of_seam_crossings = 0; // feature lines typed "seam_line" (through faces)
   std::size_t number_of_patches = 0;       // after the edits, the patches holding a face
   double cut_cost = 0;                     // after the edits
   std::size_t number_of_automatic_patches = 0; // before the edits
@@ -230,7 +231,8 @@ inline void write_summary(std::ostream& os, const Options& options, const Result
       {"valleys", r.number_of_valleys},
       {"user", r.number_of_user_lines},
       {"creases", r.number_of_crease_lines},
-      {"seams", r.number_of_seam_lines}}},
+      {"seams", r.number_of_seam_lines},
+      {"seam_lines", r.number_of_seam_crossings}}},
     {"feature_edges", r.number_of_feature_edges},
     {"crease_edges", r.number_of_crease_edges},
     {"segmentation",

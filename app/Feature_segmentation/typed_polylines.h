@@ -25,7 +25,8 @@
 
 namespace fs_app {
 
-/// A polyline with its type ("crease", "seam", "ridge", "valley", "user", "smoothed").
+/// A polyline with its type ("crease", "seam", "seam_line", "ridge", "valley", "user",
+/// "smoothed").
 struct Typed_polyline
 {
   std::string type;
@@ -36,7 +37,8 @@ struct Typed_polyline
 /// The types in the order the OBJ file lists its objects.
 inline const std::vector<std::string>& polyline_types()
 {
-  static const std::vector<std::string> types = {"crease", "seam", "ridge", "valley", "user", "smoothed"};
+  static const std::vector<std::string> types = {"crease", "seam", "seam_line", "ridge", "valley",
+                                                      "user", "smoothed"};
   return types;
 }
 
@@ -130,8 +132,8 @@ void append_feature_lines(const Mesh& mesh, const CGAL::Feature_segmentation::Fe
 
 // Every feature that a segmentation `seg` of `mesh` uses, typed: the crease edges chained
 // into "crease" lines, the curvature discontinuities into "seam" lines, then its feature
-// lines (crest lines, the user's lines and sketches: append_feature_lines) on its
-// working mesh.
+// lines (crest lines, seam lines through the faces, the user's lines and sketches:
+// append_feature_lines) on its working mesh.
 template <typename Mesh, typename Segmentation>
 std::vector<Typed_polyline> typed_feature_lines(const Mesh& mesh, const Segmentation& seg)
 {

@@ -35,9 +35,12 @@ using namespace fs_app;
 
 int run(const Options& options)
 {
-  segment_and_write(options);
+  const Results results = segment_and_write(options);
+  // the patches of the written faces: the smoothed boundaries may leave a patch of the
+  // segmentation's line above with no face of its own
   if(!options.quiet)
-    std::cerr << "outputs written to " << options.output_dir << "/" << std::endl;
+    std::cerr << "outputs written to " << options.output_dir << "/ (" << results.number_of_patches << " patches)"
+              << std::endl;
   return EXIT_SUCCESS;
 }
 

@@ -239,7 +239,7 @@ def test_boundaries_feature_lines_and_creases(fandisk, fandisk_reference):
     length = lambda cs: sum(np.linalg.norm(np.diff(c, axis=0), axis=1).sum() for c in cs)
     assert length(curves) < length(raw)  # the smoothing shortens them
     lines = seg.feature_lines()
-    assert lines and {line["kind"] for line in lines} <= {"ridge", "valley", "seam", "user"}
+    assert lines and {line["kind"] for line in lines} <= {"ridge", "valley", "seam_line", "user"}
     assert seg.creases().shape == (fandisk_reference["crease_edges"], 2, 3)
 
 

@@ -192,13 +192,18 @@ done
 crease_edges="$(fandisk_ref crease_edges)"
 seam_edges="$(fandisk_ref seam_edges)"
 crest_lines="$(fandisk_ref crest_lines)"
+seam_lines="$(fandisk_ref seam_lines)"
 fandisk_patches="$(fandisk_ref patches)"
 run default "$fandisk" --output-dir "$work/default" --quiet
 ds="$work/default/summary.json"
 check "default: exit status 0 (stderr: $(tail -n 1 "$work/default.err"))" [ "$rc" -eq 0 ]
-check "default: $crest_lines crest lines on a clean tessellation ($(json_int "$ds" feature_lines total)), typed ridge or valley" \
-  [ "$(json_int "$ds" feature_lines total)" = "$crest_lines" -a \
-    "$(grep -c -x -e ridge -e valley "$work/default/feature_lines.types.txt")" = "$crest_lines" ]
+# the feature lines are the crest lines and the seam lines through the faces, each typed
+check "default: $crest_lines crest lines on a clean tessellation, typed ridge or valley" \
+  [ "$(grep -c -x -e ridge -e valley "$work/default/feature_lines.types.txt")" = "$crest_lines" ]
+check "default: the feature lines ($(json_int "$ds" feature_lines total)) are the crest lines and $seam_lines seam lines, typed seam_line" \
+  [ "$(json_int "$ds" feature_lines total)" = "$((crest_lines + seam_lines))" -a \
+    "$(json_int "$ds" feature_lines seam_lines)" = "$seam_lines" -a \
+    "$(grep -c -x seam_line "$work/default/feature_lines.types.txt")" = "$seam_lines" ]
 # a polyline of n points covers n - 1 edges
 check "default: the crease and seam polylines cover the $crease_edges crease edges" \
   [ "$(paste -d' ' "$work/default/feature_lines.types.txt" "$work/default/feature_lines.polylines.txt" |

@@ -186,7 +186,7 @@ async function loadFeatures() {
   const ridges = new THREE.Group(), valleys = new THREE.Group(), seams = new THREE.Group(), user = new THREE.Group();
   polylines(f.ridges, 0xd62728, ridges);
   polylines(f.valleys, 0x1f5bd6, valleys);
-  polylines(f.seams, 0x2ca02c, seams);
+  polylines(f.seam_lines, 0x2ca02c, seams);
   polylines(f.user, 0xff00ff, user);
   overlays.lines.add(ridges, valleys, seams, user);
   overlays.creases.clear();

@@ -49,7 +49,7 @@ inline const char* feature_line_type_name(Feature_line_type type)
   {
     case Feature_line_type::RIDGE: return "ridge";
     case Feature_line_type::VALLEY: return "valley";
-    case Feature_line_type::SEAM: return "seam";
+    case Feature_line_type::SEAM: return "seam_line";
     default: return "user";
   }
 }

@@ -30,6 +30,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -62,22 +64,114 @@ struct Seam_thresholds
   // alpha_e > 1 makes cutting them pay (at alpha 0.6 + 0.5 the bent pipes' inner seams
   // stay whole: F 0.97 -> 0.78 and 0.94 -> 0.67).
   static constexpr double alpha_offset = 1.0;
-  // The windows ahead of and behind a point of a seam line along d2: `away` widths from
-  // it, one width long and one wide. Within them q must stay below `steady` times the
-  // point's (the fits are steady on both faces), and the mean k2 must differ by
-  // `least_step` times |k1| (a step, not a blip). Chosen on the development and generated
-  // parts with CGAL's fandisk and its flat subdivision into 16 (test_resolution.cpp),
-  // whose fits see the coarse facets and whose dk2 peaks along each of them: without
-  // the windows the subdivision gets 272 patches for 26, at 1 width or without the step
-  // 29 to 48; at a least step of 0.1 the bent pipes lose their inner seams.
-  static constexpr double away = 1.5, steady = 0.5, least_step = 0.05;
+  // The windows ahead of and behind a point of a seam line along d2: centred `away`
+  // widths from it, about one width across (Window_grid). Within them the mean q must
+  // stay below `steady` times the point's (the fits are steady on both faces), and the
+  // mean k2 must differ by `least_step` times |k1| (a step, not a blip). Chosen on the
+  // development and generated parts with CGAL's fandisk and its flat subdivision into 16
+  // (test_resolution.cpp), whose fits see the coarse facets and whose dk2 peaks along
+  // each of them: without the windows the subdivision gets 272 patches for 26, without
+  // the step 48. Fandisk stays at 26 patches at both resolutions with steady 0.4 to 0.6
+  // and a least step of 0.05 or 0.06, but gets 27 at one of them with a least step of
+  // 0.04 or the windows 1.1 or 1.5 widths away; a larger least step costs the bent pipes
+  // pieces of their inner seams (generated parts 0.977 at 0.05, 0.957 at 0.07).
+  static constexpr double away = 1.25, steady = 0.5, least_step = 0.05;
   // The least |k1| of a point of a seam line, times the diagonal: where the surface is
   // nearly flat across as well as along (an inflection of a lobed section), the jump
   // relative to |k1| means nothing (a rod with four lobes whose girth swells gets short
   // seam lines along its inflections; none from 1.01 to 1.75).
   static constexpr double least_curvature = 1.5;
-  // The most vertices a window search visits (a bound on the work of one point).
-  static constexpr std::size_t most_window_vertices = 4000;
+};
+
+// The means of the jump q and of k2 near a point of the surface, by vertex, from a grid
+// of cubic cells: the sums of each cell's vertices, apart by the side their normals face
+// (the axis of their largest component and its sign, so that the two sides of a thin
+// wall do not mix), blended trilinearly over the eight cells round the point.
+class Window_grid
+{
+public:
+  struct Mean
+  {
+    bool found = false;
+    double jump = 0, k2 = 0;
+  };
+
+  Window_grid(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normal,
+              const std::vector<double>& jump, const std::vector<double>& k2, const Eigen::Vector3d& lo, double cell)
+    : m_lo(lo), m_cell(cell)
+  {
+    std::vector<std::pair<std::uint64_t, std::size_t> > keyed(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const Eigen::Vector3d g = (points[i] - m_lo) / m_cell;
+      keyed[i] = { key(std::int64_t(std::floor(g.x())), std::int64_t(std::floor(g.y())), std::int64_t(std::floor(g.z())),
+                       side(normal[i])), i };
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for(const auto& k : keyed)
+    {
+      if(m_keys.empty() || m_keys.back() != k.first)
+      {
+        m_keys.push_back(k.first);
+        m_sums.push_back(Sums());
+      }
+      Sums& s = m_sums.back();
+      s.jump += jump[k.second];
+      s.k2 += k2[k.second];
+      s.count += 1;
+    }
+  }
+
+  // the means near p of the vertices whose normals face the side of `n`
+  Mean mean(const Eigen::Vector3d& p, const Eigen::Vector3d& n) const
+  {
+    const Eigen::Vector3d g = (p - m_lo) / m_cell - Eigen::Vector3d::Constant(0.5);
+    const Eigen::Vector3d base(std::floor(g.x()), std::floor(g.y()), std::floor(g.z()));
+    const Eigen::Vector3d f = g - base;
+    const int s = side(n);
+    double jump = 0, k2 = 0, count = 0;
+    for(int corner = 0; corner < 8; ++corner)
+    {
+      const int dx = corner & 1, dy = (corner >> 1) & 1, dz = (corner >> 2) & 1;
+      const double w = (dx ? f.x() : 1 - f.x()) * (dy ? f.y() : 1 - f.y()) * (dz ? f.z() : 1 - f.z());
+      if(!(w > 0)) continue;
+      const std::uint64_t k = key(std::int64_t(base.x()) + dx, std::int64_t(base.y()) + dy, std::int64_t(base.z()) + dz, s);
+      const auto it = std::lower_bound(m_keys.begin(), m_keys.end(), k);
+      if(it == m_keys.end() || *it != k) continue;
+      const Sums& c = m_sums[std::size_t(it - m_keys.begin())];
+      jump += w * c.jump;
+      k2 += w * c.k2;
+      count += w * c.count;
+    }
+    Mean m;
+    if(count > 0) { m.found = true; m.jump = jump / count; m.k2 = k2 / count; }
+    return m;
+  }
+
+private:
+  struct Sums
+  {
+    double jump = 0, k2 = 0, count = 0;
+  };
+
+  static int side(const Eigen::Vector3d& n)
+  {
+    int axis = 0;
+    for(int i = 1; i < 3; ++i)
+      if(std::abs(n[i]) > std::abs(n[axis])) axis = i;
+    return 2 * axis + (n[axis] < 0 ? 1 : 0);
+  }
+  // cells within the box and a ring round it (coordinates from -1): 20 bits each
+  static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z, int side)
+  {
+    const auto c = [](std::int64_t v) { return std::uint64_t(std::clamp<std::int64_t>(v + 2, 0, (1 << 20) - 1)); };
+    return (((c(x) << 20 | c(y)) << 20 | c(z)) << 3) | std::uint64_t(side);
+  }
+
+  Eigen::Vector3d m_lo;
+  double m_cell;
+  std::vector<std::uint64_t> m_keys; // sorted
+  std::vector<Sums> m_sums;
 };
 
 // The seam lines of the mesh of `idx` (Feature_line_type::SEAM, strongest first): `vpm`
@@ -128,64 +222,36 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
   // A seam is a step between two regions of steady k2 (the fits of a flat-subdivided
   // coarse tessellation see its facets instead, and their dk2 peaks along every one of
   // them: file comment): a point of a seam keeps its jump only if, in the windows
-  // `Limits::away` widths ahead of and behind it along d2, q stays below `Limits::steady`
-  // times its own and the mean k2 differs by at least `Limits::least_step` of |k1|.
+  // `Limits::away` widths ahead of and behind it along d2, the mean q stays below
+  // `Limits::steady` times its own and the mean k2 differs by at least
+  // `Limits::least_step` of |k1|. The means are read from a grid of cells of half a width
+  // (Window_grid): a constant cost per point at any resolution.
   {
-    std::vector<std::size_t> adjacency_begin(nv + 1, 0), adjacency;
-    for(std::size_t e = 0; e < ne; ++e)
-    {
-      const auto h = halfedge(idx.edge_at(e), tm);
-      ++adjacency_begin[idx.id(source(h, tm)) + 1];
-      ++adjacency_begin[idx.id(target(h, tm)) + 1];
-    }
-    for(std::size_t i = 0; i < nv; ++i) adjacency_begin[i + 1] += adjacency_begin[i];
-    adjacency.resize(adjacency_begin[nv]);
-    {
-      std::vector<std::size_t> next(adjacency_begin.begin(), adjacency_begin.end() - 1);
-      for(std::size_t e = 0; e < ne; ++e)
-      {
-        const auto h = halfedge(idx.edge_at(e), tm);
-        const std::size_t a = idx.id(source(h, tm)), b = idx.id(target(h, tm));
-        adjacency[next[a]++] = b;
-        adjacency[next[b]++] = a;
-      }
-    }
     std::vector<double> jump(nv);
     for(std::size_t i = 0; i < nv; ++i) jump[i] = data[i].k;
-    std::vector<std::size_t> stamp(nv, std::size_t(-1)), queue;
-    const double near = (Limits::away - 0.5) * width, reach = (Limits::away + 0.5) * width;
+    std::vector<Eigen::Vector3d> normal(nv, Eigen::Vector3d::Zero());
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      std::array<std::size_t, 3> v = { 0, 0, 0 };
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+      {
+        v[k++] = idx.id(target(h, tm));
+        if(k == 3) break;
+      }
+      const Eigen::Vector3d n = (points[v[1]] - points[v[0]]).cross(points[v[2]] - points[v[0]]);
+      for(std::size_t x : v) normal[x] += n; // weighted by area
+    }
+    const Window_grid grid(points, normal, jump, k2, lo, 0.5 * width);
     for(std::size_t v = 0; v < nv; ++v)
     {
       if(jump[v] < Limits::least_jump) continue;
-      // the vertices within `reach` of v reached through such vertices, breadth first
-      queue.assign(1, v);
-      stamp[v] = v;
-      double q_ahead = 0, q_behind = 0, k_ahead = 0, k_behind = 0;
-      std::size_t n_ahead = 0, n_behind = 0;
       const Eigen::Vector3d& t = data[v].t;
-      for(std::size_t j = 0; j < queue.size() && queue.size() < Limits::most_window_vertices; ++j)
-      {
-        const std::size_t x = queue[j];
-        const Eigen::Vector3d d = points[x] - points[v];
-        const double s = d.dot(t);
-        if((d - s * t).norm() <= 0.5 * width)
-        {
-          if(s >= near) { q_ahead += jump[x]; k_ahead += k2[x]; ++n_ahead; }
-          else if(s <= -near) { q_behind += jump[x]; k_behind += k2[x]; ++n_behind; }
-        }
-        for(std::size_t i = adjacency_begin[x]; i < adjacency_begin[x + 1]; ++i)
-        {
-          const std::size_t y = adjacency[i];
-          if(stamp[y] != v && (points[y] - points[v]).norm() <= reach)
-          {
-            stamp[y] = v;
-            queue.push_back(y);
-          }
-        }
-      }
-      const bool steady = n_ahead > 0 && n_behind > 0 &&
-                          (std::max)(q_ahead / double(n_ahead), q_behind / double(n_behind)) <= Limits::steady * jump[v] &&
-                          std::abs(k_ahead / double(n_ahead) - k_behind / double(n_behind)) >= Limits::least_step * k1a[v];
+      const Window_grid::Mean ahead = grid.mean(points[v] + Limits::away * width * t, normal[v]),
+                              behind = grid.mean(points[v] - Limits::away * width * t, normal[v]);
+      const bool steady = ahead.found && behind.found &&
+                          (std::max)(ahead.jump, behind.jump) <= Limits::steady * jump[v] &&
+                          std::abs(ahead.k2 - behind.k2) >= Limits::least_step * k1a[v];
       if(!steady) data[v].k = 0.;
     }
   }
