@@ -129,7 +129,8 @@ public:
   ///   \cgalParamDefault{`default_crease_filter_iterations` (40)} \cgalParamNEnd
   ///   \cgalParamNBegin{tangent_discontinuities} \cgalParamDescription{whether, on a clean
   ///   tessellation of a CAD part, the curvature discontinuities (where a fillet meets a plane or a
-  ///   wider curved face without a crease angle) join the creases} \cgalParamType{`bool`}
+  ///   wider curved face without a crease angle) join the creases, and seam lines (where two curved
+  ///   faces meet and the smaller principal curvature steps) join the crest lines} \cgalParamType{`bool`}
   ///   \cgalParamDefault{`default_tangent_discontinuities` (`true`)} \cgalParamNEnd
   ///   \cgalParamNBegin{crest_lines_on_clean_tessellations} \cgalParamDescription{whether the crest
   ///   lines of a tessellation of a CAD part (a clean one, a noisy one, or one its creases cut

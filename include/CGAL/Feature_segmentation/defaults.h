@@ -37,7 +37,8 @@ constexpr int default_crease_filter_iterations = 40;
 /// \ingroup PkgFeatureSegmentationSegmentation
 /// The default of the named parameter `tangent_discontinuities`: on a clean tessellation
 /// of a CAD part, the curvature discontinuities (a fillet meeting a plane or a wider
-/// curved face without a crease) join the creases.
+/// curved face without a crease) join the creases, and seam lines (two curved faces
+/// meeting where the smaller principal curvature steps) join the crest lines.
 constexpr bool default_tangent_discontinuities = true;
 
 /// \ingroup PkgFeatureSegmentationSegmentation

@@ -98,7 +98,8 @@ namespace Feature_segmentation {
 ///   \cgalParamNBegin{tangent_discontinuities}
 ///     \cgalParamDescription{whether, on a clean tessellation of a CAD part, the curvature discontinuities
 ///                           (where a fillet meets a plane or a wider curved face without a crease angle)
-///                           join the creases}
+///                           join the creases, and seam lines (where two curved faces meet and the
+///                           smaller principal curvature steps) join the crest lines}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`default_tangent_discontinuities` (`true`)}
 ///   \cgalParamNEnd
