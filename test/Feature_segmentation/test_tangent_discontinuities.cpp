@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/internal/seam_lines.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -285,6 +286,51 @@ BOOST_AUTO_TEST_CASE(clean_tessellation_crest_lines_weigh_less)
     if(weak.is_feature_edge(e) && !weak.is_crease_edge(e))
       BOOST_TEST((std::abs(weak.alpha(e) - 1.0) < 1e-12 || std::abs(weak.alpha(e) - 2.5) < 1e-12));
   BOOST_TEST(FS::Feature_aligned_segmentation<SM>(m).number_of_patches() == fandisk_reference("patches"));
+}
+
+// The windows of the seam lines read their means from a grid of cells (Window_grid):
+// vertices on a grid of spacing 0.1 in the plane z = 0 (normals up), jump 0 for x < 0 and
+// 1 for x > 0, k2 0.25 everywhere, and under it a wall at z = -0.01 (normals down) with
+// jump 5 and k2 -1; cells of side 0.2. The means far enough from x = 0 are exactly
+// those of their side, the wall's never mix with the plane's, and nothing is found
+// where there is no vertex.
+BOOST_AUTO_TEST_CASE(seam_line_windows_average_their_side_only)
+{
+  std::vector<Eigen::Vector3d> points, normal;
+  std::vector<double> jump, k2;
+  for(int i = -20; i <= 20; ++i)
+    for(int j = -20; j <= 20; ++j)
+    {
+      const double x = 0.1 * i + 0.05, y = 0.1 * j + 0.05; // no vertex on x = 0
+      points.emplace_back(x, y, 0.);
+      normal.emplace_back(0., 0., 2.); // any length: only its side counts
+      jump.push_back(x > 0 ? 1. : 0.);
+      k2.push_back(0.25);
+      points.emplace_back(x, y, -0.01);
+      normal.emplace_back(0., 0., -1.);
+      jump.push_back(5.);
+      k2.push_back(-1.);
+    }
+  const Eigen::Vector3d lo(-2.05, -2.05, -0.01);
+  const FS::internal::Window_grid grid(points, normal, jump, k2, lo, 0.2);
+  const Eigen::Vector3d up(0., 0., 1.), down(0., 0., -1.);
+  // at x = +-0.6 the eight cells round the point lie on one side of x = 0
+  const auto right = grid.mean(Eigen::Vector3d(0.6, 0.3, 0.), up), left = grid.mean(Eigen::Vector3d(-0.6, 0.3, 0.), up);
+  BOOST_TEST(right.found);
+  BOOST_TEST(right.jump == 1., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(right.k2 == 0.25, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(left.found);
+  BOOST_TEST(left.jump == 0., boost::test_tools::tolerance(1e-12));
+  // across x = 0 the mean lies between the sides
+  const auto across = grid.mean(Eigen::Vector3d(0., 0.3, 0.), up);
+  BOOST_TEST((across.jump > 0. && across.jump < 1.));
+  // the wall below, read with its own normals, is only the wall
+  const auto wall = grid.mean(Eigen::Vector3d(0.6, 0.3, -0.01), down);
+  BOOST_TEST(wall.found);
+  BOOST_TEST(wall.jump == 5., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(wall.k2 == -1., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(!grid.mean(Eigen::Vector3d(0., 0., 5.), up).found); // no vertex there
+  BOOST_TEST(!grid.mean(Eigen::Vector3d(0.6, 0.3, 0.), Eigen::Vector3d(1., 0., 0.)).found); // no vertex faces +x
 }
 
 BOOST_AUTO_TEST_SUITE_END()

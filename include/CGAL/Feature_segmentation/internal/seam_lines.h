@@ -206,6 +206,17 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
   mean_edge /= double((std::max)(ne, std::size_t(1)));
   const double width = (std::max)(Limits::width * diagonal, Limits::edges * mean_edge);
 
+  // the three vertices of face f
+  const auto triangle = [&](std::size_t f) {
+    std::array<std::size_t, 3> v = { 0, 0, 0 };
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      v[k++] = idx.id(target(h, tm));
+      if(k == 3) break;
+    }
+    return v;
+  };
   // the jump q and the direction of k2 per vertex
   std::vector<Crest_vertex_data> data(nv);
   std::vector<double> k2(nv, 0.), k1a(nv, 0.);
@@ -232,13 +243,7 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
     std::vector<Eigen::Vector3d> normal(nv, Eigen::Vector3d::Zero());
     for(std::size_t f = 0; f < nf; ++f)
     {
-      std::array<std::size_t, 3> v = { 0, 0, 0 };
-      int k = 0;
-      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-      {
-        v[k++] = idx.id(target(h, tm));
-        if(k == 3) break;
-      }
+      const std::array<std::size_t, 3> v = triangle(f);
       const Eigen::Vector3d n = (points[v[1]] - points[v[0]]).cross(points[v[2]] - points[v[0]]);
       for(std::size_t x : v) normal[x] += n; // weighted by area
     }
@@ -261,13 +266,7 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
   std::vector<double> weight(nv, 0.);
   for(std::size_t f = 0; f < nf; ++f)
   {
-    std::array<std::size_t, 3> v = { 0, 0, 0 };
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-    {
-      v[k++] = idx.id(target(h, tm));
-      if(k == 3) break;
-    }
+    const std::array<std::size_t, 3> v = triangle(f);
     const Eigen::Vector3d &a = points[v[0]], &b = points[v[1]], &c = points[v[2]];
     const Eigen::Vector3d n = (b - a).cross(c - a);
     const double twice_area = n.norm();
