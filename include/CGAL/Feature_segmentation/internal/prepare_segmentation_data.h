@@ -92,7 +92,7 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
       data.is_seam_edge.clear();
       if(opt.detect_seam_lines)
       {
-        Feature_lines<TriangleMesh> seams = detect_seam_lines(data.idx, vpm, cmap);
+        Feature_lines<TriangleMesh> seams = detect_seam_lines(data.idx, vpm, cmap, parallel_requested<NamedParameters>());
         data.is_seam_edge.assign(data.idx.number_of_edges(), 0);
         for(const auto& l : seams.lines)
           for(const auto& fp : l.points) data.is_seam_edge[data.idx.edge_id(fp.halfedge)] = 1;

@@ -21,6 +21,7 @@
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/crest_lines_impl.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -176,10 +177,11 @@ private:
 
 // The seam lines of the mesh of `idx` (Feature_line_type::SEAM, strongest first): `vpm`
 // its points, `curvature` its principal curvatures (a vertex property map of
-// Principal_curvatures).
+// Principal_curvatures); `parallel`: the windows of the points read by TBB's threads (the
+// same lines at any thread count).
 template <typename TriangleMesh, typename VPM, typename CurvatureMap>
 Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
-                                              CurvatureMap curvature)
+                                              CurvatureMap curvature, bool parallel = false)
 {
   typedef Seam_thresholds Limits;
   const TriangleMesh& tm = idx.mesh();
@@ -248,17 +250,19 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
       for(std::size_t x : v) normal[x] += n; // weighted by area
     }
     const Window_grid grid(points, normal, jump, k2, lo, 0.5 * width);
-    for(std::size_t v = 0; v < nv; ++v)
-    {
-      if(jump[v] < Limits::least_jump) continue;
-      const Eigen::Vector3d& t = data[v].t;
-      const Window_grid::Mean ahead = grid.mean(points[v] + Limits::away * width * t, normal[v]),
-                              behind = grid.mean(points[v] - Limits::away * width * t, normal[v]);
-      const bool steady = ahead.found && behind.found &&
-                          (std::max)(ahead.jump, behind.jump) <= Limits::steady * jump[v] &&
-                          std::abs(ahead.k2 - behind.k2) >= Limits::least_step * k1a[v];
-      if(!steady) data[v].k = 0.;
-    }
+    for_each_range(nv, parallel, 4096, [&](std::size_t first, std::size_t last) {
+      for(std::size_t v = first; v < last; ++v)
+      {
+        if(jump[v] < Limits::least_jump) continue;
+        const Eigen::Vector3d& t = data[v].t;
+        const Window_grid::Mean ahead = grid.mean(points[v] + Limits::away * width * t, normal[v]),
+                                behind = grid.mean(points[v] - Limits::away * width * t, normal[v]);
+        const bool steady = ahead.found && behind.found &&
+                            (std::max)(ahead.jump, behind.jump) <= Limits::steady * jump[v] &&
+                            std::abs(ahead.k2 - behind.k2) >= Limits::least_step * k1a[v];
+        if(!steady) data[v].k = 0.;
+      }
+    });
   }
   // the derivative of q along d2: the gradient of q linear over each face, averaged over
   // the faces round each vertex by area
