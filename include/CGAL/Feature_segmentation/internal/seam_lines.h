@@ -50,9 +50,10 @@ struct Seam_thresholds
   // The least jump q at a point of a seam line: the jump of a bent pipe's k2 is 0.13 to
   // 0.22 of its k1 where the pipe bends most and falls to zero where it bends least, so
   // a seam line ends there and the correlation clustering closes the loop. The windows
-  // below reject what a lower jump lets in: at 0.01 and at 0.02 the evaluation is the
-  // same; at 0.03 and 0.05 the bent pipes lose pieces of their inner seams (generated
-  // parts 0.976 -> 0.970 and 0.954).
+  // below reject what a lower jump lets in. The figures of these comments but the
+  // windows' were measured with the windows searched vertex by vertex 1.5 widths away:
+  // at 0.01 and at 0.02 the evaluation is the same; at 0.03 and 0.05 the bent pipes lose
+  // pieces of their inner seams (generated parts 0.976 -> 0.970 and 0.954).
   static constexpr double least_jump = 0.02;
   // The least strength of a seam line (the integral of q along it) and its least length,
   // in diagonals: the fit's fragments near creases and on freeform faces are short.
@@ -71,8 +72,8 @@ struct Seam_thresholds
   // mean k2 must differ by `least_step` times |k1| (a step, not a blip). Chosen on the
   // development and generated parts with CGAL's fandisk and its flat subdivision into 16
   // (test_resolution.cpp), whose fits see the coarse facets and whose dk2 peaks along
-  // each of them: without the windows the subdivision gets 272 patches for 26, without
-  // the step 48. Fandisk stays at 26 patches at both resolutions with steady 0.4 to 0.6
+  // each of them: without the windows the subdivision gets 272 patches for 26. With the
+  // grid, fandisk stays at 26 patches at both resolutions with steady 0.4 to 0.6
   // and a least step of 0.05 or 0.06, but gets 27 at one of them with a least step of
   // 0.04 or the windows 1.1 or 1.5 widths away; a larger least step costs the bent pipes
   // pieces of their inner seams (generated parts 0.977 at 0.05, 0.957 at 0.07).
