@@ -21,9 +21,9 @@
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/crest_lines_impl.h>
-#include <CGAL/Feature_segmentation/internal/curvature_fitting.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
+#include <CGAL/boost/graph/iterator.h>
 
 #include <Eigen/Dense>
 
@@ -185,17 +185,41 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
                                               CurvatureMap curvature, bool parallel = false)
 {
   typedef Seam_thresholds Limits;
-  const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces();
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices(), nf = idx.number_of_faces(), ne = idx.number_of_edges();
   Feature_lines<TriangleMesh> out;
   if(nv == 0 || nf == 0) return out;
-  const Mesh_geometry<TriangleMesh, VPM> geometry(idx, vpm);
-  const std::vector<Eigen::Vector3d>& points = geometry.points;
-  const double diagonal = geometry.bounding_box_diagonal();
+  std::vector<Eigen::Vector3d> points(nv);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    const auto& p = get(vpm, idx.vertex_at(i));
+    points[i] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    lo = lo.cwiseMin(points[i]);
+    hi = hi.cwiseMax(points[i]);
+  }
+  const double diagonal = (hi - lo).norm();
   if(!(diagonal > 0)) return out;
-  Eigen::Vector3d lo = points.front();
-  for(const Eigen::Vector3d& p : points) lo = lo.cwiseMin(p);
-  const double width = (std::max)(Limits::width * diagonal, Limits::edges * geometry.mean_edge_length);
+  double mean_edge = 0;
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    mean_edge += (points[idx.id(source(h, tm))] - points[idx.id(target(h, tm))]).norm();
+  }
+  mean_edge /= double((std::max)(ne, std::size_t(1)));
+  const double width = (std::max)(Limits::width * diagonal, Limits::edges * mean_edge);
 
+  // the three vertices of face f
+  const auto triangle = [&](std::size_t f) {
+    std::array<std::size_t, 3> v = { 0, 0, 0 };
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      v[k++] = idx.id(target(h, tm));
+      if(k == 3) break;
+    }
+    return v;
+  };
   // the jump q and the direction of k2 per vertex
   std::vector<Crest_vertex_data> data(nv);
   std::vector<double> k2(nv, 0.), k1a(nv, 0.);
@@ -219,7 +243,13 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
   {
     std::vector<double> jump(nv);
     for(std::size_t i = 0; i < nv; ++i) jump[i] = data[i].k;
-    const std::vector<Eigen::Vector3d>& normal = geometry.vertex_normals;
+    std::vector<Eigen::Vector3d> normal(nv, Eigen::Vector3d::Zero());
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const std::array<std::size_t, 3> v = triangle(f);
+      const Eigen::Vector3d n = (points[v[1]] - points[v[0]]).cross(points[v[2]] - points[v[0]]);
+      for(std::size_t x : v) normal[x] += n; // weighted by area
+    }
     const Window_grid grid(points, normal, jump, k2, lo, 0.5 * width);
     for_each_range(nv, parallel, 4096, [&](std::size_t first, std::size_t last) {
       for(std::size_t v = first; v < last; ++v)
@@ -241,11 +271,12 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
   std::vector<double> weight(nv, 0.);
   for(std::size_t f = 0; f < nf; ++f)
   {
-    const std::array<std::size_t, 3>& v = geometry.face_vertices[f];
+    const std::array<std::size_t, 3> v = triangle(f);
     const Eigen::Vector3d &a = points[v[0]], &b = points[v[1]], &c = points[v[2]];
-    const double twice_area = 2 * geometry.face_areas[f];
-    if(!(twice_area > 0) || geometry.face_normals[f].isZero()) continue;
-    const Eigen::Vector3d& u = geometry.face_normals[f];
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    const double twice_area = n.norm();
+    if(!(twice_area > 0)) continue;
+    const Eigen::Vector3d u = n / twice_area;
     // the gradient of the linear interpolant, times twice the area
     const Eigen::Vector3d g =
       data[v[0]].k * u.cross(c - b) + data[v[1]].k * u.cross(a - c) + data[v[2]].k * u.cross(b - a);
