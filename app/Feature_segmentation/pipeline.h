@@ -204,8 +204,9 @@ public:
     if(!options.quiet)
       std::cerr << "feature lines: " << results.number_of_ridges << " ridges, "
                 << results.number_of_valleys << " valleys, " << results.number_of_seam_crossings
-                << " seam lines, " << results.number_of_user_lines << " user; " << results.number_of_crease_edges << " crease edges; "
-                << results.number_of_feature_edges << " feature edges" << std::endl;
+                << " seam lines, " << results.number_of_user_lines << " user; "
+                << results.number_of_crease_edges << " crease edges; " << results.number_of_feature_edges
+                << " feature edges" << std::endl;
     results.solver_seconds = last_solver_seconds;
     results.segmentation_stages = segmentation->stage_times();
     // the patches that hold a face (a patch of the vertex labels may win no face's majority)

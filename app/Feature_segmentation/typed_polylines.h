@@ -37,8 +37,8 @@ struct Typed_polyline
 /// The types in the order the OBJ file lists its objects.
 inline const std::vector<std::string>& polyline_types()
 {
-  static const std::vector<std::string> types = {"crease", "seam", "seam_line", "ridge", "valley",
-                                                      "user", "smoothed"};
+  static const std::vector<std::string> types = {"crease", "seam", "seam_line", "ridge",
+                                                 "valley", "user", "smoothed"};
   return types;
 }
 
