@@ -49,18 +49,42 @@ public:
   Boundary_smoothing_result run(std::size_t iterations, double tolerance)
   {
     Boundary_smoothing_result r;
-    r.energy.push_back(m_s.total_energy(true));
-    r.length.push_back(m_s.total_energy(false));
-    // The sweeps work on the cut edges and the faces with cut edges, in increasing order
-    // (the other faces have no point and no energy); only the vertex moves, which change
-    // the cut edges, look at every vertex.
+    // Only the movable vertices change patch, so every edge that is or becomes cut has
+    // a movable end and lies in its ring, and every face with cut edges has one of those
+    // edges: the sweeps, the vertex moves and the energies look at these edges, faces and
+    // vertices only (in increasing order, as a pass over the whole mesh would; a face
+    // without cut edges adds an energy of exactly 0), so that an iteration costs what
+    // the boundaries hold, not what the mesh holds.
+    std::vector<std::size_t> movers, near_edges, near_faces;
+    for(std::size_t v = 0; v < m_s.number_of_vertices(); ++v)
+    {
+      if(!m_s.movable[v]) continue;
+      movers.push_back(v);
+      for(std::size_t i = m_s.ring_begin(v); i < m_s.ring_end(v); ++i)
+      {
+        near_edges.push_back(m_s.ring_entries[i][1]);
+        if(m_s.ring_entries[i][2] != npos) near_faces.push_back(m_s.ring_entries[i][2]);
+      }
+    }
+    for(auto* list : { &near_edges, &near_faces })
+    {
+      std::sort(list->begin(), list->end());
+      list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
+    auto energy = [&](bool anisotropic) {
+      double e = 0;
+      for(std::size_t f : near_faces) e += m_s.face_energy(f, anisotropic);
+      return e;
+    };
+    r.energy.push_back(energy(true));
+    r.length.push_back(energy(false));
     std::vector<std::size_t> cut, faces;
     std::vector<char> marked(m_s.number_of_faces(), 0);
     for(std::size_t it = 0; it < iterations; ++it)
     {
       cut.clear();
       faces.clear();
-      for(std::size_t e = 0; e < m_s.number_of_edges(); ++e)
+      for(std::size_t e : near_edges)
         if(m_s.is_cut(e))
         {
           cut.push_back(e);
@@ -85,10 +109,10 @@ public:
       for(std::size_t f : faces) update_face(f);
       for(std::size_t e : cut) update_edge(e);
       extrapolate(cut, faces, t0, x0);
-      for(std::size_t v = 0; v < m_s.number_of_vertices(); ++v)
+      for(std::size_t v : movers)
         if(try_vertex_move(v)) ++r.vertex_moves;
-      r.energy.push_back(m_s.total_energy(true));
-      r.length.push_back(m_s.total_energy(false));
+      r.energy.push_back(energy(true));
+      r.length.push_back(energy(false));
       ++r.iterations;
       const double before = r.energy[r.energy.size() - 2], after = r.energy.back();
       if(before - after <= tolerance * before)
