@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -61,18 +62,15 @@ Refined_segmentation_sizes write_PLY_refined_segmentation(std::ostream& os,
 {
   const internal::Refinement r = internal::refine_along_boundaries(boundaries.state(), internal::snapping_ratio(np));
   internal::write_PLY_segmentation_header(os, r.points.size(), r.triangles.size());
-  for(const auto& p : r.points)
-  {
-    internal::write_coordinates(os, p);
-    os << '\n';
-  }
-  std::vector<char> line;
-  for(std::size_t i = 0; i < r.triangles.size(); ++i)
-  {
+  internal::write_ordered_text(os, r.points.size(), [&](std::size_t i, std::string& text) {
+    const auto& p = r.points[i];
+    internal::append_PLY_vertex(text, p.x(), p.y(), p.z());
+  });
+  internal::write_ordered_text(os, r.triangles.size(), [&](std::size_t i, std::string& text) {
     const auto& t = r.triangles[i];
     const std::size_t indices[3] = { t[0], t[1], t[2] };
-    internal::write_PLY_segmentation_face(os, line, 3, indices, static_cast<long long>(std::size_t(r.patches[i])));
-  }
+    internal::append_PLY_segmentation_face(text, 3, indices, static_cast<long long>(std::size_t(r.patches[i])));
+  });
   Refined_segmentation_sizes sizes;
   sizes.number_of_vertices = r.points.size();
   sizes.number_of_faces = r.triangles.size();

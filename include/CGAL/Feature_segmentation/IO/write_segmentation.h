@@ -11,9 +11,11 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
+#include <CGAL/Feature_segmentation/internal/ordered_text.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/IO/Color.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -22,10 +24,12 @@
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/range/adaptor/transformed.hpp>
+#include <boost/range/value_type.hpp>
 
-#include <charconv>
 #include <cstddef>
+#include <iterator>
 #include <ostream>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -98,28 +102,27 @@ inline void write_PLY_segmentation_header(std::ostream& os, std::size_t number_o
      << "end_header\n";
 }
 
-// A face's line: its degree, its vertex indices, its patch id and colour. The line is
-// made in `line` (a buffer kept between faces), its numbers by std::to_chars.
+// A face's line: its degree, its vertex indices, its patch id and colour, appended to
+// `text`.
 template <typename IndexRange, typename Id>
-void write_PLY_segmentation_face(std::ostream& os, std::vector<char>& line, std::size_t degree,
-                                 const IndexRange& vertex_indices, Id id)
+void append_PLY_segmentation_face(std::string& text, std::size_t degree, const IndexRange& vertex_indices, Id id)
 {
-  auto put_number = [&line](long long x, char after) {
-    char text[24];
-    const char* end = std::to_chars(text, text + sizeof(text), x).ptr;
-    line.insert(line.end(), static_cast<const char*>(text), end);
-    line.push_back(after);
-  };
-  line.clear();
-  put_number(static_cast<long long>(degree), ' ');
+  append_integer(text, static_cast<long long>(degree), ' ');
   for(const auto i : vertex_indices)
-    put_number(static_cast<long long>(i), ' ');
+    append_integer(text, static_cast<long long>(i), ' ');
   const CGAL::IO::Color c = segmentation_colour(id);
-  put_number(static_cast<long long>(id), ' ');
-  put_number(c.red(), ' ');
-  put_number(c.green(), ' ');
-  put_number(c.blue(), '\n');
-  os.write(line.data(), std::streamsize(line.size()));
+  append_integer(text, static_cast<long long>(id), ' ');
+  append_integer(text, c.red(), ' ');
+  append_integer(text, c.green(), ' ');
+  append_integer(text, c.blue(), '\n');
+}
+
+// A vertex's line: its coordinates.
+inline void append_PLY_vertex(std::string& text, double x, double y, double z)
+{
+  append_double(text, x, ' ');
+  append_double(text, y, ' ');
+  append_double(text, z, '\n');
 }
 
 } // namespace internal
@@ -172,18 +175,29 @@ bool write_PLY_segmentation(std::ostream& os, const TriangleMesh& tm,
     put(vim, v, next_index++);
 
   internal::write_PLY_segmentation_header(os, vertices(tm).size(), faces(tm).size());
-  for(vertex_descriptor v : vertices(tm))
-  {
-    internal::write_coordinates(os, get(vpm, v));
-    os << '\n';
-  }
-  std::vector<char> line;
-  for(face_descriptor f : faces(tm))
-    internal::write_PLY_segmentation_face(
-      os, line, CGAL::halfedges_around_face(halfedge(f, tm), tm).size(),
+  // The lines are made by TBB's threads (the same file at any thread count); the
+  // points' lines only if their coordinates are doubles already (an exact kernel's
+  // conversion may compute and store the exact value, which is not safe from several
+  // threads at once).
+  typedef typename boost::property_traits<VPM>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
+  const std::vector<vertex_descriptor> vertex_list(vertices(tm).begin(), vertices(tm).end());
+  internal::write_ordered_text(
+    os, vertex_list.size(),
+    [&](std::size_t i, std::string& text) {
+      const auto& p = get(vpm, vertex_list[i]);
+      internal::append_PLY_vertex(text, CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    },
+    std::is_floating_point<FT>::value);
+  const std::vector<face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
+  internal::write_ordered_text(os, face_list.size(), [&](std::size_t i, std::string& text) {
+    const face_descriptor f = face_list[i];
+    internal::append_PLY_segmentation_face(
+      text, CGAL::halfedges_around_face(halfedge(f, tm), tm).size(),
       boost::adaptors::transform(CGAL::vertices_around_face(halfedge(f, tm), tm),
                                  [&vim](vertex_descriptor v) { return get(vim, v); }),
       get(face_patch_map, f));
+  });
   return os.good();
 }
 
@@ -202,13 +216,11 @@ bool write_PLY_segmentation(std::ostream& os, const TriangleMesh& tm,
 template <typename KeyRange, typename PatchMap>
 bool write_patch_ids(std::ostream& os, const KeyRange& keys, PatchMap patch_map)
 {
-  for(const auto& k : keys)
-  {
-    char text[24];
-    char* end = std::to_chars(text, text + sizeof(text) - 1, static_cast<long long>(get(patch_map, k))).ptr;
-    *end++ = '\n';
-    os.write(text, end - text);
-  }
+  typedef typename boost::range_value<KeyRange>::type Key;
+  const std::vector<Key> key_list(std::begin(keys), std::end(keys));
+  internal::write_ordered_text(os, key_list.size(), [&](std::size_t i, std::string& text) {
+    internal::append_integer(text, static_cast<long long>(get(patch_map, key_list[i])), '\n');
+  });
   return os.good();
 }
 
