@@ -12,10 +12,12 @@
 
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/IO/write_feature_lines.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <ostream>
@@ -42,28 +44,45 @@ inline const std::vector<std::string>& polyline_types()
   return types;
 }
 
-/// The marked edges of `mesh` chained into polylines of vertices: a chain runs through
-/// the vertices with two marked edges and ends at the others; what is left are closed
-/// loops. Deterministic: chains start at the vertices in their iteration order.
+/// The marked edges of `mesh` (a `Surface_mesh`) chained into polylines of vertices: a
+/// chain runs through the vertices with two marked edges and ends at the others; what is
+/// left are closed loops. Deterministic: chains start at the vertices in their index
+/// order. The edges are marked by TBB's threads (`is_marked` is called from several
+/// threads at once), the rest looks at the marked edges and their ends only.
 template <typename Mesh, typename IsMarked>
 std::vector<std::pair<std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>, bool> >
 edge_chains(const Mesh& mesh, IsMarked is_marked)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-  auto degree = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
-  auto used = get(CGAL::dynamic_edge_property_t<bool>(), mesh);
-  for(vertex_descriptor v : vertices(mesh)) put(degree, v, 0);
-  for(auto e : edges(mesh))
+  typedef typename Mesh::Edge_index Edge_index;
+  const std::size_t ne = mesh.number_of_edges() + mesh.number_of_removed_edges();
+  std::vector<char> marked(ne, 0);
+  CGAL::Feature_segmentation::internal::for_each_range(ne, true, 16384, [&](std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i)
+    {
+      const Edge_index e(static_cast<typename Edge_index::size_type>(i));
+      marked[i] = !mesh.is_removed(e) && is_marked(e);
+    }
+  });
+  std::vector<std::size_t> marked_edges, ends;
+  for(std::size_t i = 0; i < ne; ++i)
+    if(marked[i]) marked_edges.push_back(i);
+  std::vector<int> degree(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), 0);
+  for(std::size_t i : marked_edges)
   {
-    put(used, e, false);
-    if(!is_marked(e)) continue;
-    put(degree, source(halfedge(e, mesh), mesh), get(degree, source(halfedge(e, mesh), mesh)) + 1);
-    put(degree, target(halfedge(e, mesh), mesh), get(degree, target(halfedge(e, mesh), mesh)) + 1);
+    const halfedge_descriptor h = halfedge(Edge_index(static_cast<typename Edge_index::size_type>(i)), mesh);
+    for(vertex_descriptor v : { source(h, mesh), target(h, mesh) })
+      if(degree[v.idx()]++ == 0) ends.push_back(v.idx());
   }
+  std::sort(ends.begin(), ends.end());
+  std::vector<char> used(ne, 0);
   auto next_out = [&](vertex_descriptor v) {
     for(halfedge_descriptor h : CGAL::halfedges_around_source(v, mesh))
-      if(is_marked(edge(h, mesh)) && !get(used, edge(h, mesh))) return h;
+    {
+      const std::size_t e = edge(h, mesh).idx();
+      if(marked[e] && !used[e]) return h;
+    }
     return boost::graph_traits<Mesh>::null_halfedge();
   };
   std::vector<std::pair<std::vector<vertex_descriptor>, bool> > chains;
@@ -73,21 +92,24 @@ edge_chains(const Mesh& mesh, IsMarked is_marked)
     bool closed = false;
     while(h != boost::graph_traits<Mesh>::null_halfedge())
     {
-      put(used, edge(h, mesh), true);
+      used[edge(h, mesh).idx()] = 1;
       const vertex_descriptor w = target(h, mesh);
       if(w == start) { closed = true; break; }
       chain.push_back(w);
-      if(get(degree, w) != 2) break;
+      if(degree[w.idx()] != 2) break;
       h = next_out(w);
     }
     chains.emplace_back(std::move(chain), closed);
   };
-  for(vertex_descriptor v : vertices(mesh))
-    if(get(degree, v) != 2)
+  for(std::size_t i : ends)
+  {
+    const vertex_descriptor v(static_cast<typename vertex_descriptor::size_type>(i));
+    if(degree[i] != 2)
       for(halfedge_descriptor h = next_out(v); h != boost::graph_traits<Mesh>::null_halfedge(); h = next_out(v))
         walk(h);
-  for(auto e : edges(mesh)) // loops: every vertex of two marked edges
-    if(is_marked(e) && !get(used, e)) walk(halfedge(e, mesh));
+  }
+  for(std::size_t i : marked_edges) // loops: every vertex of two marked edges
+    if(!used[i]) walk(halfedge(Edge_index(static_cast<typename Edge_index::size_type>(i)), mesh));
   return chains;
 }
 
