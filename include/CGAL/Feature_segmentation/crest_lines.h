@@ -62,7 +62,8 @@ Crest_options read_crest_options(const NamedParameters& np)
 // the segmentation's precomputation calls, so that the mesh is checked and indexed once.
 template <typename TriangleMesh, typename VPM, typename VertexCurvatureMap>
 Feature_lines<TriangleMesh> detect_crest_lines(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
-                                               VertexCurvatureMap curvature_map, const Crest_options& opt)
+                                               VertexCurvatureMap curvature_map, const Crest_options& opt,
+                                               bool parallel = false)
 {
   std::vector<Eigen::Vector3d> points(idx.number_of_vertices());
   for(std::size_t i = 0; i < points.size(); ++i)
@@ -87,7 +88,7 @@ Feature_lines<TriangleMesh> detect_crest_lines(const Mesh_indexing<TriangleMesh>
       data[i].e = CGAL::to_double(ridge ? c.e_max() : c.e_min());
       data[i].t = Eigen::Vector3d(CGAL::to_double(d.x()), CGAL::to_double(d.y()), CGAL::to_double(d.z()));
     }
-    detector.detect(type, data, opt, result);
+    detector.detect(type, data, opt, result, parallel);
   }
   detector.sort_lines(result);
   return result;

@@ -7,6 +7,7 @@
 
 #include <CGAL/Feature_segmentation/Feature_lines.h>
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
 #include <Eigen/Dense>
 
@@ -53,7 +54,7 @@ public:
 
   // `data[v]` describes vertex v for `type`; appends the lines found to `out`.
   void detect(Feature_line_type type, const std::vector<Crest_vertex_data>& data,
-              const Crest_options& opt, Feature_lines<TriangleMesh>& out) const
+              const Crest_options& opt, Feature_lines<TriangleMesh>& out, bool parallel = false) const
   {
     const TriangleMesh& tm = m_idx.mesh();
     const std::size_t ne = m_idx.number_of_edges();
@@ -63,7 +64,8 @@ public:
 
     // 1. One crossing at most per edge.
     std::vector<double> cross_t(ne, -1.), cross_k(ne, 0.);
-    for(std::size_t ei = 0; ei < ne; ++ei)
+    for_each_range(ne, parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t ei = first; ei < last; ++ei)
     {
       halfedge_descriptor h = halfedge(m_idx.edge_at(ei), tm);
       const std::size_t a = m_idx.id(source(h, tm)), b = m_idx.id(target(h, tm));
@@ -94,6 +96,7 @@ public:
       cross_t[ei] = s;
       cross_k[ei] = std::abs(k);
     }
+    });
 
     // 2. Segments inside triangles: two crossed edges are joined; with three, the two
     //    strongest are, and the third crossing ends a line.
@@ -102,14 +105,26 @@ public:
       (link[x][0] == npos ? link[x][0] : link[x][1]) = y;
       (link[y][0] == npos ? link[y][0] : link[y][1]) = x;
     };
-    for(std::size_t fi = 0; fi < m_idx.number_of_faces(); ++fi)
-    {
+    auto crossed_edges = [&](std::size_t fi, std::array<std::size_t, 3>& crossed) {
       halfedge_descriptor h = halfedge(m_idx.face_at(fi), tm);
-      std::array<std::size_t, 3> es = { m_idx.edge_id(h), m_idx.edge_id(next(h, tm)),
-                                        m_idx.edge_id(prev(h, tm)) };
-      std::array<std::size_t, 3> crossed;
+      const std::array<std::size_t, 3> es = { m_idx.edge_id(h), m_idx.edge_id(next(h, tm)),
+                                              m_idx.edge_id(prev(h, tm)) };
       int nc = 0;
       for(std::size_t e : es) if(cross_t[e] >= 0) crossed[nc++] = e;
+      return nc;
+    };
+    // the faces with two or three crossings are found by the threads, linked in order
+    const std::size_t nf = m_idx.number_of_faces();
+    std::vector<char> joins(nf, 0);
+    for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+      std::array<std::size_t, 3> crossed;
+      for(std::size_t fi = first; fi < last; ++fi) joins[fi] = crossed_edges(fi, crossed) >= 2;
+    });
+    for(std::size_t fi = 0; fi < nf; ++fi)
+    {
+      if(!joins[fi]) continue;
+      std::array<std::size_t, 3> crossed;
+      const int nc = crossed_edges(fi, crossed);
       if(nc == 2)
         add_link(crossed[0], crossed[1]);
       else if(nc == 3)

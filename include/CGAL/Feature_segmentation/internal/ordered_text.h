@@ -26,7 +26,7 @@ inline void append_integer(std::string& out, long long x, char after)
   char text[24];
   char* end = std::to_chars(text, text + sizeof(text) - 1, x).ptr;
   *end++ = after;
-  out.append(text, end);
+  out.append(text, std::size_t(end - text));
 }
 
 inline void append_double(std::string& out, double x, char after)
@@ -34,7 +34,7 @@ inline void append_double(std::string& out, double x, char after)
   char text[40];
   char* end = std::to_chars(text, text + sizeof(text) - 1, x).ptr;
   *end++ = after;
-  out.append(text, end);
+  out.append(text, std::size_t(end - text));
 }
 
 // Writes the lines of the items 0 .. n-1 to `os` in this order; format(i, text) appends

@@ -87,7 +87,7 @@ void prepare_segmentation_data(const TriangleMesh& tm, const NamedParameters& np
     }
     else
     {
-      if(opt.detect_crest_lines) lines_out = detect_crest_lines(data.idx, vpm, cmap, read_crest_options(np));
+      if(opt.detect_crest_lines) lines_out = detect_crest_lines(data.idx, vpm, cmap, read_crest_options(np), parallel_requested<NamedParameters>());
       else lines_out.lines.clear();
       data.is_seam_edge.clear();
       if(opt.detect_seam_lines)

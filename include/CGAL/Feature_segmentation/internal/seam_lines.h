@@ -297,7 +297,7 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
   options.umbilic_ratio = 0.; // k_other is 0: the test is k > 0
   Crest_line_detector<TriangleMesh> detector(idx, points);
   Feature_lines<TriangleMesh> found;
-  detector.detect(Feature_line_type::RIDGE, data, options, found); // the maxima of q
+  detector.detect(Feature_line_type::RIDGE, data, options, found, parallel); // the maxima of q
   for(auto& l : found.lines)
     if(l.length >= Limits::least_length * diagonal)
     {
