@@ -448,10 +448,11 @@ check "65 edits and 65 undos: the automatic segmentation's face patches are back
 for n in 1 2 8; do
   run "threads$n" "$fandisk" --output-dir "$work/threads$n" --threads "$n" $crest --quiet
   check "--threads $n: exit status 0" [ "$rc" -eq 0 ]
-  check "--threads $n: the same face_patches.txt as the default run" \
-    cmp -s "$work/threads$n/face_patches.txt" "$out/face_patches.txt"
-  check "--threads $n: the same boundaries as the default run" \
-    cmp -s "$work/threads$n/boundaries.polylines.txt" "$out/boundaries.polylines.txt"
+  for f in face_patches.txt vertex_patches.txt segmentation.ply segmentation_refined.ply \
+           feature_lines.polylines.txt feature_lines.types.txt feature_lines.obj \
+           boundaries.polylines.txt boundaries.types.txt; do
+    check "--threads $n: the same $f as the default run" cmp -s "$work/threads$n/$f" "$out/$f"
+  done
 done
 
 echo "script_program: $passed passed, $failed failed"

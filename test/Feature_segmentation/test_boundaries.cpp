@@ -7,6 +7,7 @@
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
 #include <CGAL/Feature_segmentation/face_patches.h>
 #include <CGAL/Feature_segmentation/IO/write_refined_segmentation.h>
+#include <CGAL/Feature_segmentation/internal/ordered_text.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -20,6 +21,10 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include "test_meshes.h"
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -436,6 +441,77 @@ BOOST_AUTO_TEST_CASE(patch_ids_beyond_32_bits)
   std::ostringstream os;
   FS::write_PLY_refined_segmentation(os, b);
   BOOST_TEST(os.str().find(" 5000000000 ") != std::string::npos);
+}
+
+// The writers' lines are made by TBB's threads in ordered chunks: 100,003 lines in
+// chunks of 1,000, seven at a time (101 chunks in 15 batches), give the file that one
+// thread appending line after line gives, at 1, 2 and 8 threads; a double's text reads
+// back as the same double.
+BOOST_AUTO_TEST_CASE(ordered_text_is_the_same_at_any_thread_count)
+{
+  namespace FSI = CGAL::Feature_segmentation::internal;
+  const std::size_t n = 100003;
+  auto format = [](std::size_t i, std::string& text) {
+    FSI::append_integer(text, static_cast<long long>((i * 7919) % 100003) - 50000, ' ');
+    FSI::append_double(text, 1. / double(i + 1), '\n');
+  };
+  std::string expected;
+  for(std::size_t i = 0; i < n; ++i) format(i, expected);
+  BOOST_TEST(std::count(expected.begin(), expected.end(), '\n') == std::ptrdiff_t(n));
+  std::istringstream lines(expected);
+  long long id = 0;
+  std::string x;
+  for(std::size_t i = 0; i < n && lines >> id >> x; ++i)
+    if(std::stod(x) != 1. / double(i + 1)) BOOST_ERROR("line " << i << ": " << x << " is not 1/" << i + 1);
+  for(int threads : { 1, 2, 8 })
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+    std::ostringstream os;
+    FSI::write_ordered_text(os, n, format, true, 1000, 7);
+    BOOST_TEST(os.str() == expected, threads << " threads");
+    std::ostringstream default_chunks;
+    FSI::write_ordered_text(default_chunks, n, format);
+    BOOST_TEST(default_chunks.str() == expected, threads << " threads, default chunks");
+  }
+  std::ostringstream empty;
+  FSI::write_ordered_text(empty, 0, format);
+  BOOST_TEST(empty.str().empty());
+}
+
+// The PLY file of a mesh of 81,920 faces (five chunks of lines) and its patch ids: the
+// same bytes at 1, 2 and 8 threads, and as many vertex and face lines as the mesh has.
+BOOST_AUTO_TEST_CASE(segmentation_files_are_the_same_at_any_thread_count)
+{
+  const SM m = fs_test::to_mesh<SM>(fs_test::icosphere(1., 6));
+  BOOST_TEST(num_faces(m) == 81920u);
+  auto fp = get(CGAL::dynamic_face_property_t<long>(), m);
+  for(auto f : faces(m)) put(fp, f, long(f.idx() % 37) - 1); // -1: a face without patch
+  std::string first_ply, first_ids;
+  for(int threads : { 1, 2, 8 })
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+    std::ostringstream ply, ids;
+    FS::write_PLY_segmentation(ply, m, fp);
+    FS::write_patch_ids(ids, faces(m), fp);
+    if(threads == 1)
+    {
+      first_ply = ply.str();
+      first_ids = ids.str();
+      const std::size_t lines = std::size_t(std::count(first_ply.begin(), first_ply.end(), '\n'));
+      BOOST_TEST(lines == 14u + num_vertices(m) + num_faces(m)); // 14 header lines
+      BOOST_TEST(std::size_t(std::count(first_ids.begin(), first_ids.end(), '\n')) == num_faces(m));
+      BOOST_TEST(first_ids.substr(0, 9) == "-1\n0\n1\n2\n");
+    }
+    else
+    {
+      BOOST_TEST(ply.str() == first_ply, threads << " threads");
+      BOOST_TEST(ids.str() == first_ids, threads << " threads");
+    }
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
