@@ -141,18 +141,20 @@ constexpr double crease_filter_roughness = 0.01;
 // 0.0085 on the 14 CAD parts of the evaluation; noise of 0.1% of the diagonal along the
 // normals makes it 0.035 to 0.1.
 inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std::vector<std::uint32_t>& begin,
-                               const std::vector<std::uint32_t>& ring)
+                               const std::vector<std::uint32_t>& ring, bool parallel = false)
 {
   const std::size_t nf = n.size();
   if(nf == 0) return 0.;
   std::vector<double> r(nf, 0.); // squared; the median's root is taken once
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    double least = 4.;
-    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      if(ring[i] != f && n[ring[i]].squaredNorm() > 0) least = (std::min)(least, (n[f] - n[ring[i]]).squaredNorm());
-    r[f] = least;
-  }
+  for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
+    {
+      double least = 4.;
+      for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+        if(ring[i] != f && n[ring[i]].squaredNorm() > 0) least = (std::min)(least, (n[f] - n[ring[i]]).squaredNorm());
+      r[f] = least;
+    }
+  });
   std::nth_element(r.begin(), r.begin() + nf / 2, r.end());
   return std::sqrt(r[nf / 2]);
 }
@@ -312,7 +314,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   std::vector<std::uint32_t> begin, ring;
   vertex_adjacent_faces(idx, begin, ring);
   const std::vector<double> raw = dihedral_angles(idx, normal, parallel);
-  const double raw_roughness = normal_roughness(normal, begin, ring);
+  const double raw_roughness = normal_roughness(normal, begin, ring, parallel);
   clean = raw_roughness <= crease_filter_roughness;
   // A clean tessellation is not filtered. A smooth model (raw roughness up to
   // Crease_gap::raw_roughness) is filtered until its median face is smooth or for

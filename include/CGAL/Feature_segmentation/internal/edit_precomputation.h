@@ -49,7 +49,7 @@ public:
   // mesh; `times` receives the seconds of these stages.
   template <typename NamedParameters>
   Edit_precomputation(const TriangleMesh& tm, const NamedParameters& np, Stage_times& times)
-    : opt(read_segmentation_options<TriangleMesh>(np))
+    : opt(read_segmentation_options<TriangleMesh>(np)), parallel(parallel_requested<NamedParameters>())
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
@@ -63,7 +63,7 @@ public:
     {
       Stage_timer timer(&times.creases);
       compute_crease_cut(*input_idx, vpm, opt.crease_angle, opt.crease_filter_iterations, opt.tangent_discontinuities,
-                         opt.gamma, cut, parallel_requested<NamedParameters>());
+                         opt.gamma, cut, parallel);
     }
     data = std::make_unique<Segmentation_data<TriangleMesh> >(cut.is_cut() ? *cut.working_idx : *input_idx);
     prepare(tm, np, times);
@@ -130,6 +130,7 @@ public:
   Feature_lines<TriangleMesh> lines;  // on the working mesh, without sketches and creases
   Edge_alphas alpha_e;                // the initial alpha_e of every edge and tie
   bool anisotropic = true, reduced = true;
+  bool parallel = false;              // the stages that can run on TBB's threads do
   Solver solver;
 
 private:

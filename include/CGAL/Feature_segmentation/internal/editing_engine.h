@@ -249,7 +249,7 @@ private:
   void build_reduction(Reduction& r, const Feature_terms& features, const std::vector<char>* region) const
   {
     const Precomputation& p = *m_pre;
-    r.os = p.reduced ? compute_oversegmentation(*p.data, features, p.anisotropic, region) : singletons(region);
+    r.os = p.reduced ? compute_oversegmentation(*p.data, features, p.anisotropic, region, p.parallel) : singletons(region);
     if(region == nullptr)
     {
       r.rg.build(r.os.vertex_segment, r.os.number_of_segments, p.data->edge_vertices);

@@ -9,6 +9,7 @@
 
 #include <CGAL/Feature_segmentation/Correlation_clustering_graph.h>
 #include <CGAL/Feature_segmentation/internal/Segmentation_data.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/watershed.h>
 
 #include <algorithm>
@@ -35,7 +36,8 @@ template <typename TriangleMesh>
 // patches it touches): the faces whose three vertices are in the region, and the
 // region's vertices; the others get `std::size_t(-1)` in `vertex_segment`.
 Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>& data, const Feature_terms& features,
-                                          bool anisotropic, const std::vector<char>* vertex_in_region = nullptr)
+                                          bool anisotropic, const std::vector<char>* vertex_in_region = nullptr,
+                                          bool parallel = false)
 {
   const auto& idx = data.idx;
   const TriangleMesh& tm = idx.mesh();
@@ -102,26 +104,29 @@ Oversegmentation compute_oversegmentation(const Segmentation_data<TriangleMesh>&
   // 1. Majority basin of the basin faces around each vertex, ties to the smallest id.
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> basin(nv, none);
-  std::vector<std::pair<long, int> > counts;
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    if(!in_region(v)) continue;
-    counts.clear();
-    for(auto h : CGAL::halfedges_around_target(idx.vertex_at(v), tm))
+  // each vertex alone: by TBB's threads if `parallel`
+  for_each_range(nv, parallel, 4096, [&](std::size_t first, std::size_t last) {
+    std::vector<std::pair<long, int> > counts;
+    for(std::size_t v = first; v < last; ++v)
     {
-      const std::size_t f = idx.face_id(h);
-      if(f == Mesh_indexing<TriangleMesh>::npos || face_basin[f] == watershed_label) continue;
-      auto it = std::find_if(counts.begin(), counts.end(),
-                             [&](const std::pair<long, int>& c) { return c.first == face_basin[f]; });
-      if(it == counts.end()) counts.emplace_back(face_basin[f], 1);
-      else ++it->second;
+      if(!in_region(v)) continue;
+      counts.clear();
+      for(auto h : CGAL::halfedges_around_target(idx.vertex_at(v), tm))
+      {
+        const std::size_t f = idx.face_id(h);
+        if(f == Mesh_indexing<TriangleMesh>::npos || face_basin[f] == watershed_label) continue;
+        auto it = std::find_if(counts.begin(), counts.end(),
+                               [&](const std::pair<long, int>& c) { return c.first == face_basin[f]; });
+        if(it == counts.end()) counts.emplace_back(face_basin[f], 1);
+        else ++it->second;
+      }
+      if(counts.empty()) continue;
+      auto best = counts.begin();
+      for(auto it = counts.begin(); it != counts.end(); ++it)
+        if(it->second > best->second || (it->second == best->second && it->first < best->first)) best = it;
+      basin[v] = std::size_t(best->first);
     }
-    if(counts.empty()) continue;
-    auto best = counts.begin();
-    for(auto it = counts.begin(); it != counts.end(); ++it)
-      if(it->second > best->second || (it->second == best->second && it->first < best->first)) best = it;
-    basin[v] = std::size_t(best->first);
-  }
+  });
   // Vertex adjacency through non-feature edges (feature edges are never crossed below).
   std::vector<std::size_t> adj_begin(nv + 1, 0), adj;
   for(std::size_t e = 0; e < data.edge_vertices.size(); ++e)
