@@ -56,7 +56,15 @@ Refinement refine_along_boundaries(const Boundary_state<TriangleMesh>& s, double
   Refinement r;
   // points: at most a new one per edge and per face
   check_compact_index_range(s.number_of_vertices() + s.number_of_edges() + s.number_of_faces());
-  r.points = s.points;
+  // The arrays are sized once (a face with cut edges gives at most one point and six
+  // triangles): a growing array would be copied into fresh memory several times.
+  std::size_t cut_edges = 0, cut_faces = 0;
+  for(std::size_t e = 0; e < s.number_of_edges(); ++e) cut_edges += s.is_cut(e) ? 1 : 0;
+  for(std::size_t f = 0; f < s.number_of_faces(); ++f) cut_faces += s.has_cut_edges(f) ? 1 : 0;
+  r.points.reserve(s.number_of_vertices() + cut_edges + cut_faces);
+  r.points.assign(s.points.begin(), s.points.end());
+  r.triangles.reserve(s.number_of_faces() + 5 * cut_faces);
+  r.patches.reserve(s.number_of_faces() + 5 * cut_faces);
   // Every cut edge: a new vertex at its point, or the end it snaps to.
   std::vector<std::size_t> edge_node(s.number_of_edges(), npos);
   for(std::size_t e = 0; e < s.number_of_edges(); ++e)
