@@ -18,9 +18,11 @@
 //   megabytes, read as typed arrays without parsing), little-endian:
 //     mesh     uint32 vertices V, uint32 triangles T, float64 diagonal, float32 x y z per
 //              vertex, uint32 i j k per triangle (16 + 12 V + 12 T bytes)
-//     labels   uint32 patches, uint32 T, uint32 V, uint32 0, uint32 patch per triangle,
-//              uint32 patch per vertex (16 + 4 T + 4 V bytes); with &vertices=0, V is 0
-//              and the triangles' patches end it (what the page loads)
+//     labels   uint32 patches, uint32 T, uint32 V, uint32 B, then the patch of every
+//              triangle and of every vertex as unsigned integers of B bytes, the fewest
+//              of 1, 2 or 4 that hold the largest patch id (16 + B (T + V) bytes: a
+//              million faces of a part of under 256 patches in 1 MB); with &vertices=0,
+//              V is 0 and the triangles' patches end it (what the page loads)
 //   history    ?from=K&count=N (N in 1 .. 1000): {"edit_count", "from", "edits": [lines]}
 //   features   {"ridges", "valleys", "seam_lines", "user": [[x y z ...] per line],
 //               "creases": [x y z x y z per crease edge ...]}
@@ -168,18 +170,26 @@ public:
     const Mesh& m = m_run->pipeline.mesh;
     const auto& seg = *m_run->pipeline.segmentation;
     const std::size_t nt = m_triangles.size(), nv = vertices ? std::size_t(m.number_of_vertices()) : 0;
-    internal::Little_endian_bytes out(16 + 4 * (nt + nv));
+    std::vector<std::uint32_t> ids(nt + nv);
+    FS::internal::for_each_range(nt, true, 16384, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i) ids[i] = std::uint32_t(seg.patch(m_triangles[i]));
+    });
+    if(vertices)
+    {
+      std::size_t i = nt;
+      for(Mesh::Vertex_index v : m.vertices()) ids[i++] = std::uint32_t(seg.patch(v));
+    }
+    const std::uint32_t largest = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end());
+    const unsigned width = largest < 0x100u ? 1 : largest < 0x10000u ? 2 : 4;
+    internal::Little_endian_bytes out(16 + width * ids.size());
     out.u32(seg.number_of_patches());
     out.u32(nt);
     out.u32(nv);
-    out.u32(0);
-    char* const faces = out.u32_block(nt);
-    FS::internal::for_each_range(nt, true, 16384, [&](std::size_t first, std::size_t last) {
-      for(std::size_t i = first; i < last; ++i)
-        internal::Little_endian_bytes::write_u32(faces + 4 * i, std::uint32_t(seg.patch(m_triangles[i])));
+    out.u32(width);
+    char* const block = out.id_block(ids.size(), width);
+    FS::internal::for_each_range(ids.size(), true, 65536, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i) internal::Little_endian_bytes::write_id(block + width * i, ids[i], width);
     });
-    if(vertices)
-      for(Mesh::Vertex_index v : m.vertices()) out.u32(seg.patch(v));
     return out.take();
   }
 

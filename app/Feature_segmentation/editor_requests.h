@@ -125,6 +125,18 @@ public:
     m_bytes.resize(at + 4 * count);
     return &m_bytes[at];
   }
+  // Appends `count` zero ids of `width` bytes (1, 2 or 4) and returns where they start,
+  // for write_id(); the pointer holds until the next append.
+  char* id_block(std::size_t count, unsigned width)
+  {
+    const std::size_t at = m_bytes.size();
+    m_bytes.resize(at + std::size_t(width) * count);
+    return &m_bytes[at];
+  }
+  static void write_id(char* at, std::uint32_t x, unsigned width)
+  {
+    for(unsigned k = 0; k < width; ++k) at[k] = char((x >> (8 * k)) & 0xff);
+  }
   static void write_u32(char* at, std::uint32_t x)
   {
     at[0] = char(x & 0xff);

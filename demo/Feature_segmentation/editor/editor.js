@@ -209,13 +209,15 @@ async function loadBoundaries() {
 
 // Fetches and draws the labels; resolves to the milliseconds of the two.
 async function loadLabels() {
-  // GET /api/labels?format=binary&vertices=0: four uint32 (patches, triangles, 0, 0),
-  // then the patch of every triangle
+  // GET /api/labels?format=binary&vertices=0: four uint32 (patches, triangles, 0, the
+  // bytes of an id: 1, 2 or 4), then the patch of every triangle
   const t0 = performance.now();
   const bytes = await apiBytes('/api/labels?format=binary&vertices=0');
   const t1 = performance.now();
   const header = new DataView(bytes, 0, 16);
-  facePatches = new Uint32Array(bytes, 16, header.getUint32(4, true));
+  const Ids = { 1: Uint8Array, 2: Uint16Array, 4: Uint32Array }[header.getUint32(12, true)];
+  if (!Ids) throw new Error('labels: an id width that is not 1, 2 or 4 bytes');
+  facePatches = new Ids(bytes, 16, header.getUint32(4, true));
   palette = patchPalette(header.getUint32(0, true));
   colorFaces();
   return { fetch: t1 - t0, draw: performance.now() - t1 };

@@ -183,19 +183,30 @@ try {
   check('binary mesh: the diagonal, the coordinates (as float32) and the triangles of the JSON mesh',
         bmHeader.getFloat64(8, true) === mesh.diagonal && mesh.vertices.every((x, i) => bmXyz[i] === Math.fround(x)) &&
         mesh.triangles.every((t, i) => bmTri[i] === t));
+  // the ids in the fewest bytes (1, 2 or 4) that hold the largest one
+  const idWidth = (ids) => { const most = Math.max(0, ...ids); return most < 256 ? 1 : most < 65536 ? 2 : 4; };
+  const idArray = { 1: Uint8Array, 2: Uint16Array, 4: Uint32Array };
   const bl = await bytes('api/labels?format=binary');
   const blHeader = new DataView(bl.buffer);
-  const blFaces = new Uint32Array(bl.buffer, 16, ref.faces), blVertices = new Uint32Array(bl.buffer, 16 + 4 * ref.faces, ref.vertices);
+  const width = blHeader.getUint32(12, true);
+  const expectedWidth = idWidth([...l0.face_patches, ...l0.vertex_patches]);
+  check(`binary labels: ids of ${expectedWidth} byte(s), the fewest that hold the largest of the JSON labels`,
+        width === expectedWidth, width);
+  const Ids = idArray[width] || Uint8Array;
+  const blFaces = new Ids(bl.buffer, 16, ref.faces), blVertices = new Ids(bl.buffer, 16 + width * ref.faces, ref.vertices);
   check('binary labels: patches, counts and every patch id of the JSON labels',
-        bl.buffer.byteLength === 16 + 4 * (ref.faces + ref.vertices) && blHeader.getUint32(0, true) === ref.patches &&
+        bl.buffer.byteLength === 16 + width * (ref.faces + ref.vertices) && blHeader.getUint32(0, true) === ref.patches &&
         blHeader.getUint32(4, true) === ref.faces && blHeader.getUint32(8, true) === ref.vertices &&
         l0.face_patches.every((p, i) => blFaces[i] === p) && l0.vertex_patches.every((p, i) => blVertices[i] === p));
   const bf = await bytes('api/labels?format=binary&vertices=0');
   const bfHeader = new DataView(bf.buffer);
-  check('binary labels with vertices=0: V = 0 and the same patch of every triangle, nothing after',
-        bf.buffer.byteLength === 16 + 4 * ref.faces && bfHeader.getUint32(0, true) === ref.patches &&
-        bfHeader.getUint32(4, true) === ref.faces && bfHeader.getUint32(8, true) === 0 &&
-        new Uint32Array(bf.buffer, 16, ref.faces).every((p, i) => p === blFaces[i]), `${bf.buffer.byteLength} bytes`);
+  const bfWidth = bfHeader.getUint32(12, true);
+  check('binary labels with vertices=0: V = 0, the triangles\' id width, the same patch of every triangle, nothing after',
+        bfWidth === idWidth(l0.face_patches) && bf.buffer.byteLength === 16 + bfWidth * ref.faces &&
+        bfHeader.getUint32(0, true) === ref.patches && bfHeader.getUint32(4, true) === ref.faces &&
+        bfHeader.getUint32(8, true) === 0 &&
+        new (idArray[bfWidth] || Uint8Array)(bf.buffer, 16, ref.faces).every((p, i) => p === blFaces[i]),
+        `${bf.buffer.byteLength} bytes`);
   check('labels: vertices=2, and vertices on JSON labels or on the mesh, are refused',
         (await get('api/labels?format=binary&vertices=2')).status === 400 &&
         (await get('api/labels?vertices=0')).status === 400 && (await get('api/mesh?format=binary&vertices=0')).status === 400);
