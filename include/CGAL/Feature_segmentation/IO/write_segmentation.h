@@ -133,7 +133,10 @@ inline void append_PLY_vertex(std::string& text, double x, double y, double z)
 /// faces in the order of `faces(tm)`, each with its vertex indices, an `int` property
 /// `patch_id` and `uchar` properties `red`, `green`, `blue` given by
 /// `segmentation_colour()` of its patch id. CGAL's `read_PLY()` and
-/// `read_polygon_soup()` read the file back; viewers show the colours.
+/// `read_polygon_soup()` read the file back; viewers show the colours. With TBB
+/// (`CGAL_LINKED_WITH_TBB`), the lines are formatted by TBB's threads in ordered chunks
+/// (the file is the same byte for byte at any thread count; `face_patch_map` is read from
+/// several threads, and the points too when their coordinates are doubles).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` (any face degree is written)
 /// \tparam FacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
@@ -205,7 +208,9 @@ bool write_PLY_segmentation(std::ostream& os, const TriangleMesh& tm,
 /// Writes one patch id per line: `get(patch_map, k)` for every `k` of `keys`, in order.
 /// With `keys = faces(tm)` and the `face_patch_map` of `segment_along_features()` this
 /// lists the patch of every face; with a range of indices and a map from index to id, the
-/// patch of every element of a file.
+/// patch of every element of a file. With TBB, the lines are formatted by TBB's threads
+/// in ordered chunks (the same bytes at any thread count; `patch_map` is read from
+/// several threads).
 ///
 /// \tparam KeyRange a range of keys of `PatchMap`
 /// \tparam PatchMap a `ReadablePropertyMap` whose value type is an integer type
