@@ -117,14 +117,6 @@ public:
     put(std::uint32_t(bits & 0xffffffffu));
     put(std::uint32_t(bits >> 32));
   }
-  // Appends `count` zero uint32 and returns where they start, for write_u32(); the
-  // pointer holds until the next append.
-  char* u32_block(std::size_t count)
-  {
-    const std::size_t at = m_bytes.size();
-    m_bytes.resize(at + 4 * count);
-    return &m_bytes[at];
-  }
   // Appends `count` zero ids of `width` bytes (1, 2 or 4) and returns where they start,
   // for write_id(); the pointer holds until the next append.
   char* id_block(std::size_t count, unsigned width)
@@ -136,13 +128,6 @@ public:
   static void write_id(char* at, std::uint32_t x, unsigned width)
   {
     for(unsigned k = 0; k < width; ++k) at[k] = char((x >> (8 * k)) & 0xff);
-  }
-  static void write_u32(char* at, std::uint32_t x)
-  {
-    at[0] = char(x & 0xff);
-    at[1] = char((x >> 8) & 0xff);
-    at[2] = char((x >> 16) & 0xff);
-    at[3] = char(x >> 24);
   }
   std::string take() { return std::move(m_bytes); }
 

@@ -65,37 +65,37 @@ public:
     // 1. One crossing at most per edge.
     std::vector<double> cross_t(ne, -1.), cross_k(ne, 0.);
     for_each_range(ne, parallel, 8192, [&](std::size_t first, std::size_t last) {
-    for(std::size_t ei = first; ei < last; ++ei)
-    {
-      halfedge_descriptor h = halfedge(m_idx.edge_at(ei), tm);
-      const std::size_t a = m_idx.id(source(h, tm)), b = m_idx.id(target(h, tm));
-      const Crest_vertex_data& A = data[a];
-      const Crest_vertex_data& B = data[b];
-      // orient B's direction like A's: the directions are defined up to sign, and the
-      // extremality coefficient flips with the direction
-      const double flip = (A.t.dot(B.t) < 0) ? -1. : 1.;
-      const double ea = A.e, eb = flip * B.e;
-      if(!(ea * eb < 0))
-        continue;
-      const Vec3 tbar = A.t + flip * B.t;
-      // maximum (ridge, sign +1) or minimum (valley, sign -1) along the direction: the
-      // coefficient decreases (ridge) or increases (valley) when moving along tbar. The
-      // gradient of its linear interpolant over the edge's triangles decides: unlike the
-      // difference along the edge alone, it stays informative when the edge runs along
-      // the crest (creases of CAD meshes often do).
-      if(!(sign * extremality_gradient(h, data, ea, eb, A.t).dot(tbar) < 0))
-        continue;
-      const double s = ea / (ea - eb);
-      const double k = (1 - s) * A.k + s * B.k;
-      const double ko = (1 - s) * A.k_other + s * B.k_other;
-      // Yoshizawa et al.: k_max > |k_min| on ridges, k_min < -|k_max| on valleys; away
-      // from umbilics, where the directions carry no information
-      if(!(sign * k > std::abs(ko)) || !(sign * k - std::abs(ko) > opt.umbilic_ratio * std::abs(k)) ||
-         !(std::abs(k) > flat))
-        continue;
-      cross_t[ei] = s;
-      cross_k[ei] = std::abs(k);
-    }
+      for(std::size_t ei = first; ei < last; ++ei)
+      {
+        halfedge_descriptor h = halfedge(m_idx.edge_at(ei), tm);
+        const std::size_t a = m_idx.id(source(h, tm)), b = m_idx.id(target(h, tm));
+        const Crest_vertex_data& A = data[a];
+        const Crest_vertex_data& B = data[b];
+        // orient B's direction like A's: the directions are defined up to sign, and the
+        // extremality coefficient flips with the direction
+        const double flip = (A.t.dot(B.t) < 0) ? -1. : 1.;
+        const double ea = A.e, eb = flip * B.e;
+        if(!(ea * eb < 0))
+          continue;
+        const Vec3 tbar = A.t + flip * B.t;
+        // maximum (ridge, sign +1) or minimum (valley, sign -1) along the direction: the
+        // coefficient decreases (ridge) or increases (valley) when moving along tbar. The
+        // gradient of its linear interpolant over the edge's triangles decides: unlike the
+        // difference along the edge alone, it stays informative when the edge runs along
+        // the crest (creases of CAD meshes often do).
+        if(!(sign * extremality_gradient(h, data, ea, eb, A.t).dot(tbar) < 0))
+          continue;
+        const double s = ea / (ea - eb);
+        const double k = (1 - s) * A.k + s * B.k;
+        const double ko = (1 - s) * A.k_other + s * B.k_other;
+        // Yoshizawa et al.: k_max > |k_min| on ridges, k_min < -|k_max| on valleys; away
+        // from umbilics, where the directions carry no information
+        if(!(sign * k > std::abs(ko)) || !(sign * k - std::abs(ko) > opt.umbilic_ratio * std::abs(k)) ||
+           !(std::abs(k) > flat))
+          continue;
+        cross_t[ei] = s;
+        cross_k[ei] = std::abs(k);
+      }
     });
 
     // 2. Segments inside triangles: two crossed edges are joined; with three, the two
