@@ -163,17 +163,15 @@ public:
   /// GET /api/labels?format=binary (the layout is at the top of this file); with
   /// `vertices` false (?vertices=0, what the page loads), V is 0 and no vertex follows.
   /// The faces' patches are computed by the threads of the run, each face on its own
-  /// (`patch(face_descriptor)`), so the bytes are the same at any thread count.
+  /// (`face_patches()`), so the bytes are the same at any thread count.
   std::string labels_binary(bool vertices = true) const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
     const Mesh& m = m_run->pipeline.mesh;
     const auto& seg = *m_run->pipeline.segmentation;
     const std::size_t nt = m_triangles.size(), nv = vertices ? std::size_t(m.number_of_vertices()) : 0;
-    std::vector<std::uint32_t> ids(nt + nv);
-    FS::internal::for_each_range(nt, true, 16384, [&](std::size_t first, std::size_t last) {
-      for(std::size_t i = first; i < last; ++i) ids[i] = std::uint32_t(seg.patch(m_triangles[i]));
-    });
+    std::vector<std::uint32_t> ids = face_patch_ids();
+    ids.resize(nt + nv);
     if(vertices)
     {
       std::size_t i = nt;
@@ -219,14 +217,26 @@ private:
     return diagonal;
   }
 
+  // The patch of every triangle, in the order of m_triangles (the segmentation's
+  // face_patches(), on the run's threads); the caller holds the lock.
+  std::vector<std::uint32_t> face_patch_ids() const
+  {
+    const Mesh& m = m_run->pipeline.mesh;
+    std::vector<std::uint32_t> by_index(m.number_of_faces() + m.number_of_removed_faces());
+    m_run->pipeline.segmentation->face_patches(boost::make_iterator_property_map(by_index.begin(), get(CGAL::face_index, m)));
+    std::vector<std::uint32_t> ids(m_triangles.size());
+    for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = by_index[m_triangles[i]];
+    return ids;
+  }
+
   // The patch of every triangle and vertex; returns the number of patches.
   std::size_t label_arrays(std::vector<std::size_t>& faces, std::vector<std::size_t>& vertices) const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
     const Mesh& m = m_run->pipeline.mesh;
     const auto& seg = *m_run->pipeline.segmentation;
-    faces.reserve(m_triangles.size());
-    for(Mesh::Face_index f : m_triangles) faces.push_back(seg.patch(f));
+    const std::vector<std::uint32_t> ids = face_patch_ids();
+    faces.assign(ids.begin(), ids.end());
     vertices.reserve(m.number_of_vertices());
     for(Mesh::Vertex_index v : m.vertices()) vertices.push_back(seg.patch(v));
     return seg.number_of_patches();

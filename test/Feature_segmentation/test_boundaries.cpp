@@ -7,6 +7,7 @@
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
 #include <CGAL/Feature_segmentation/face_patches.h>
 #include <CGAL/Feature_segmentation/IO/write_refined_segmentation.h>
+#include <CGAL/Feature_segmentation/internal/boundary_state.h>
 #include <CGAL/Feature_segmentation/internal/ordered_text.h>
 #include <CGAL/Feature_segmentation/segment_along_features.h>
 
@@ -27,6 +28,7 @@
 #endif
 
 #include <algorithm>
+#include <random>
 #include <cmath>
 #include <map>
 #include <set>
@@ -319,6 +321,39 @@ void moves_onto_crease()
 
 BOOST_AUTO_TEST_CASE(crease_surface_mesh) { moves_onto_crease<SM>(); }
 BOOST_AUTO_TEST_CASE(crease_polyhedron) { moves_onto_crease<Poly>(); }
+
+// The initial point of a cut edge: where the shortest path between the dual vertices
+// of its faces crosses it. Edge (0,0,0)-(1,0,0), d0 = (0.2, 1, 0) at distance 1 from
+// the line, d1 at distance 3 above x = 0.8: the path crosses at 0.2 + 0.6 / 4 = 0.35,
+// wherever d1 is turned about the line. On random edges the closed form is at the
+// minimum of the length found by dense sampling, within the margin.
+BOOST_AUTO_TEST_CASE(initial_edge_point)
+{
+  typedef FS::internal::Boundary_state<SM> B;
+  typedef Eigen::Vector3d V;
+  const V p0(0, 0, 0), p1(1, 0, 0);
+  BOOST_TEST(std::abs(B::initial_edge_t(p0, p1, V(0.2, 1, 0), V(0.8, -3, 0)) - 0.35) < 1e-15);
+  BOOST_TEST(std::abs(B::initial_edge_t(p0, p1, V(0.2, 1, 0), V(0.8, 0, 3)) - 0.35) < 1e-15);
+  BOOST_TEST(std::abs(B::initial_edge_t(p1, p0, V(0.2, 1, 0), V(0.8, 0, 3)) - 0.65) < 1e-15);
+  // beyond the ends: clamped to the margin
+  BOOST_TEST(B::initial_edge_t(p0, p1, V(-2, 1, 0), V(-1, -1, 0)) == B::edge_margin);
+  BOOST_TEST(B::initial_edge_t(p0, p1, V(2, 1, 0), V(3, 0, 1)) == 1 - B::edge_margin);
+  // both on the line: the middle of their projections; a degenerate edge: its middle
+  BOOST_TEST(std::abs(B::initial_edge_t(p0, p1, V(0.1, 0, 0), V(0.5, 0, 0)) - 0.3) < 1e-15);
+  BOOST_TEST(B::initial_edge_t(p0, p0, V(0.1, 1, 0), V(0.5, -1, 0)) == 0.5);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for(int i = 0; i < 200; ++i)
+  {
+    const V a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), d0(u(rng), u(rng), u(rng)), d1(u(rng), u(rng), u(rng));
+    const auto length = [&](double t) { const V p = (1 - t) * a + t * b; return (p - d0).norm() + (p - d1).norm(); };
+    const double t = B::initial_edge_t(a, b, d0, d1);
+    BOOST_TEST((t >= B::edge_margin && t <= 1 - B::edge_margin));
+    double best = length(B::edge_margin);
+    for(int k = 0; k <= 100000; ++k) best = (std::min)(best, length(B::edge_margin + (1 - 2 * B::edge_margin) * k / 100000.));
+    BOOST_TEST(length(t) <= best + 1e-12);
+  }
+}
 
 // One triangle, vertex 0 alone in patch 0: its quadrilateral (vertex, the two edge
 // midpoints, the centroid) covers 1/6 of the area 1/2, so the face goes to patch 1; with

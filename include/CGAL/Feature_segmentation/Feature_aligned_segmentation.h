@@ -239,14 +239,18 @@ public:
     write_vertex_patches(map, [&s](std::size_t w) { return s.vertex_patch(w); });
   }
   /// Writes the patch of every face (as `patch(face_descriptor)`) into a
-  /// `WritablePropertyMap` from `face_descriptor`.
+  /// `WritablePropertyMap` from `face_descriptor`. The patches are computed by TBB's
+  /// threads when the class was built with `concurrency_tag(CGAL::Parallel_tag)` (the same
+  /// patches at any thread count);
+  /// the map is written by the calling thread.
   template <typename FacePatchMap>
   void face_patches(FacePatchMap map) const
   {
     typedef typename boost::property_traits<FacePatchMap>::value_type Id;
     const internal::Mesh_indexing<TriangleMesh>& in = pre().input_indexing();
+    const std::vector<std::size_t> patch = m_engine.face_patches(state()); // working face f is input face f
     for(std::size_t f = 0; f < in.number_of_faces(); ++f)
-      put(map, in.face_at(f), static_cast<Id>(patch(in.face_at(f))));
+      put(map, in.face_at(f), static_cast<Id>(patch[f]));
   }
   /// Writes the patch of every face as the boundaries `b` cut it: the patch covering most
   /// of its area (`majority_face_patches()`), into a `WritablePropertyMap` from

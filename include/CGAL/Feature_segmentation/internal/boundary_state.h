@@ -155,13 +155,25 @@ public:
 
   // The initial point of an edge from p0 to p1 between two faces with dual vertices d0
   // and d1 (as a parameter from p0): where the shortest path from d0 to d1 through the
-  // edge crosses it, at least edge_margin from its ends.
+  // edge's line crosses it, clamped to [edge_margin, 1 - edge_margin]. In closed form:
+  // |p(t) - d| depends only on t and on d's distance r to the line, so turning d1 about
+  // the line to the side opposite d0 changes nothing, and in that plane the path is
+  // straight; it crosses the line at t0 + (t1 - t0) r0 / (r0 + r1), where t0, t1 are the
+  // parameters of the projections of d0, d1 (the sum of distances is convex in t, so its
+  // minimum on the clamped interval is the clamped minimum).
   static double initial_edge_t(const Vec3& p0, const Vec3& p1, const Vec3& d0, const Vec3& d1)
   {
-    return minimize_convex(edge_margin, 1 - edge_margin, [&](double t) {
-      const Vec3 p = (1 - t) * p0 + t * p1;
-      return (p - d0).norm() + (p - d1).norm();
-    });
+    const Vec3 u = p1 - p0;
+    const double uu = u.squaredNorm();
+    double t = 0.5;
+    if(uu > 0)
+    {
+      const double t0 = u.dot(d0 - p0) / uu, t1 = u.dot(d1 - p0) / uu;
+      const double r0 = (d0 - p0 - t0 * u).norm(), r1 = (d1 - p0 - t1 * u).norm();
+      t = (r0 + r1 > 0) ? t0 + (t1 - t0) * (r0 / (r0 + r1)) : 0.5 * (t0 + t1);
+      if(!(t == t)) t = 0.5; // not a number: an infinite or undefined input
+    }
+    return (std::min)(1 - edge_margin, (std::max)(edge_margin, t));
   }
 
   // Golden-section search for the minimum of a convex function on [lo, hi] (deterministic;

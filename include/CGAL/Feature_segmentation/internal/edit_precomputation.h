@@ -18,9 +18,15 @@
 #include <CGAL/Feature_segmentation/internal/prepare_segmentation_data.h>
 #include <CGAL/Feature_segmentation/internal/stage_times.h>
 
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <limits>
+#include <stdexcept>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -67,6 +73,7 @@ public:
     }
     data = std::make_unique<Segmentation_data<TriangleMesh> >(cut.is_cut() ? *cut.working_idx : *input_idx);
     prepare(tm, np, times);
+    set_face_corners();
     anisotropic = choose_parameter(get_parameter(np, internal_np::watershed_distance),
                                    Watershed_distance::ANISOTROPIC) == Watershed_distance::ANISOTROPIC;
     reduced = choose_parameter(get_parameter(np, internal_np::use_oversegmentation), true);
@@ -132,8 +139,28 @@ public:
   bool anisotropic = true, reduced = true;
   bool parallel = false;              // the stages that can run on TBB's threads do
   Solver solver;
+  // per working face: the working ids of its corners, corner k the source of the k-th
+  // halfedge from halfedge(f) (halfedge(f), its next, its previous)
+  std::vector<std::array<std::uint32_t, 3> > face_corners;
 
 private:
+  void set_face_corners()
+  {
+    const Mesh_indexing<TriangleMesh>& idx = data->idx;
+    const TriangleMesh& wm = idx.mesh();
+    if(idx.number_of_vertices() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+      throw std::length_error("Feature_segmentation: more than 2^32 - 1 vertices");
+    face_corners.resize(idx.number_of_faces());
+    for_each_range(face_corners.size(), parallel, 16384, [&](std::size_t first, std::size_t last) {
+      for(std::size_t f = first; f < last; ++f)
+      {
+        const auto h = halfedge(idx.face_at(f), wm);
+        face_corners[f] = { std::uint32_t(idx.id(source(h, wm))), std::uint32_t(idx.id(source(next(h, wm), wm))),
+                            std::uint32_t(idx.id(source(prev(h, wm), wm))) };
+      }
+    });
+  }
+
   auto working_halfedge_at(std::size_t id) const
   {
     const auto h = halfedge(data->idx.edge_at(id / 2), data->idx.mesh());

@@ -199,19 +199,15 @@ public:
   {
     typedef Boundary_state<TriangleMesh> B;
     const Segmentation_data<TriangleMesh>& d = *m_pre->data;
+    const std::array<std::uint32_t, 3>& v = m_pre->face_corners[f];
+    const std::array<std::size_t, 3> l = { s.vertex_patch(v[0]), s.vertex_patch(v[1]), s.vertex_patch(v[2]) };
+    if(l[0] == l[1] && l[1] == l[2]) return l[0];
     const Mesh_indexing<TriangleMesh>& idx = d.idx;
     const TriangleMesh& tm = idx.mesh();
     const auto h = halfedge(idx.face_at(f), tm);
     const std::array<decltype(h), 3> hs = { h, next(h, tm), prev(h, tm) };
-    std::array<std::size_t, 3> l;
     std::array<Eigen::Vector3d, 3> p, edge_point;
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t v = idx.id(source(hs[k], tm)); // corner k: the source of edge k
-      l[k] = s.vertex_patch(v);
-      p[k] = d.points[v];
-    }
-    if(l[0] == l[1] && l[1] == l[2]) return l[0];
+    for(int k = 0; k < 3; ++k) p[k] = d.points[v[k]];
     const std::vector<Eigen::Vector3d>& dual = s.features->dual_vertices;
     for(int k = 0; k < 3; ++k)
     {
@@ -225,6 +221,17 @@ public:
       edge_point[k] = (1 - t) * a + t * b;
     }
     return area_majority_patch(l, p, edge_point, B::keep_inside(p[0], p[1], p[2], dual[f], B::face_margin));
+  }
+
+  // The patch of every working face (as face_patch()), by TBB's threads if the
+  // precomputation's are on: the same patches at any thread count.
+  std::vector<std::size_t> face_patches(const Edit_state& s) const
+  {
+    std::vector<std::size_t> patch(m_pre->face_corners.size());
+    for_each_range(patch.size(), m_pre->parallel, 16384, [&](std::size_t first, std::size_t last) {
+      for(std::size_t f = first; f < last; ++f) patch[f] = face_patch(s, f);
+    });
+    return patch;
   }
 
   static void check_face(face_descriptor f)
