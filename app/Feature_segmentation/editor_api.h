@@ -34,7 +34,10 @@
 //               "amount": D} | {"op": "scale", "faces": [...], "factor": F} |
 //               {"op": "merge", "faces": [...]} | {"op": "sketch", "points": [[x, y, z],
 //               ...], "alpha": A (optional, > 1)} | {"op": "undo"} | {"op": "redo"};
-//               answered with the new state
+//               answered with the new state; with ?labels=binary (what the page sends),
+//               with the state and the triangles' patches in one message: uint32 J,
+//               the state's JSON in J bytes (J a multiple of 4, the JSON padded with
+//               spaces), then the labels as ?format=binary&vertices=0 gives them
 // A request the editor cannot take (bad JSON, an unknown op or key, a missing or
 // non-finite number, a face index out of range, nothing to undo) throws Request_error
 // and changes nothing.
@@ -115,6 +118,31 @@ public:
   {
     const auto start = std::chrono::steady_clock::now();
     std::lock_guard<std::mutex> lock(m_mutex);
+    edit_unlocked(request, start);
+    return state_unlocked();
+  }
+
+  /// POST /api/edit?labels=binary: applies one edit and answers with the new state and
+  /// the triangles' patches in one message (the layout is at the top of this file).
+  /// \throws Request_error if the edit is refused (nothing changes)
+  std::string edit_with_labels(const nlohmann::json& request)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::lock_guard<std::mutex> lock(m_mutex);
+    edit_unlocked(request, start);
+    std::string state = state_unlocked().dump();
+    state.resize((state.size() + 3) / 4 * 4, ' '); // the labels' ids start 4-byte aligned
+    const std::string labels = labels_binary_unlocked(false);
+    internal::Little_endian_bytes out(4 + state.size() + labels.size());
+    out.u32(state.size());
+    out.append(state);
+    out.append(labels);
+    return out.take();
+  }
+
+private:
+  void edit_unlocked(const nlohmann::json& request, std::chrono::steady_clock::time_point start)
+  {
     Script_edit e = script_edit_from_json(request, m_triangles.size(), m_history.size() + 1);
     Edit_record r;
     try
@@ -127,8 +155,9 @@ public:
     }
     record(r, e);
     m_last_server_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return state_unlocked();
   }
+
+public:
 
   std::string mesh() const
   {
@@ -167,6 +196,12 @@ public:
   std::string labels_binary(bool vertices = true) const
   {
     std::lock_guard<std::mutex> lock(m_mutex);
+    return labels_binary_unlocked(vertices);
+  }
+
+private:
+  std::string labels_binary_unlocked(bool vertices) const
+  {
     const Mesh& m = m_run->pipeline.mesh;
     const auto& seg = *m_run->pipeline.segmentation;
     const std::size_t nt = m_triangles.size(), nv = vertices ? std::size_t(m.number_of_vertices()) : 0;
@@ -191,7 +226,6 @@ public:
     return out.take();
   }
 
-private:
   // The vertices' coordinates and the triangles' corners as the page draws them; returns
   // the bounding box's diagonal.
   double mesh_arrays(std::vector<double>& xyz, std::vector<std::size_t>& tri) const

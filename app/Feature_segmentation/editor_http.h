@@ -34,6 +34,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace fs_app {
@@ -271,10 +272,10 @@ inline std::optional<Http_answer> refuse_by_headers(const http::request_header<>
   return std::nullopt;
 }
 
-// Parses the body as JSON and answers with `call(body)`; 400 for bad JSON or a request
-// that `call` refuses.
+// Parses the body as JSON and answers with `call(body)` (JSON, or the bytes `call`
+// returns as `type`); 400 for bad JSON or a request that `call` refuses.
 template <typename Call>
-Http_answer answer_json_request(const std::string& body, Call call)
+Http_answer answer_json_request(const std::string& body, Call call, const char* type = "application/json")
 {
   nlohmann::json request;
   try
@@ -287,7 +288,10 @@ Http_answer answer_json_request(const std::string& body, Call call)
   }
   try
   {
-    return json_answer(call(request).dump());
+    if constexpr(std::is_same<decltype(call(request)), std::string>::value)
+      return Http_answer{http::status::ok, call(request), type, false};
+    else
+      return json_answer(call(request).dump());
   }
   catch(const Request_error& e)
   {
@@ -362,7 +366,15 @@ inline Http_answer answer_request(const http::request<http::string_body>& req, E
     {
       if(!post) return wrong_method("POST");
       if(path == "/api/edit")
-        return answer_json_request(req.body(), [&](const nlohmann::json& j) { return session.edit(j); });
+      {
+        const auto labels = query->find("labels");
+        if(labels != query->end() && labels->second != "binary")
+          return error_answer(http::status::bad_request, "edit: 'labels' must be binary");
+        if(labels == query->end())
+          return answer_json_request(req.body(), [&](const nlohmann::json& j) { return session.edit(j); });
+        return answer_json_request(req.body(), [&](const nlohmann::json& j) { return session.edit_with_labels(j); },
+                                   "application/octet-stream");
+      }
       if(path == "/api/restart")
         return answer_json_request(req.body(), [&](const nlohmann::json& j) { return session.restart(j); });
       return json_answer(session.save().dump());

@@ -129,6 +129,7 @@ public:
   {
     for(unsigned k = 0; k < width; ++k) at[k] = char((x >> (8 * k)) & 0xff);
   }
+  void append(const std::string& bytes) { m_bytes += bytes; }
   std::string take() { return std::move(m_bytes); }
 
 private:

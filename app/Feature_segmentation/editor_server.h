@@ -8,6 +8,7 @@
 //        /api/features, /api/boundaries?smooth=0|1,
 //        /api/history?from=K&count=N
 //   POST /api/edit   one edit (body: JSON), answered with the new state
+//        (?labels=binary: with the state and the binary labels in one message)
 //   POST /api/restart  another crest-line scale: {"radius": X, "strength_threshold": T}
 //   POST /api/save   writes the outputs and edits.txt into --output-dir
 // A refused request gets a 4xx status and {"error": "..."} naming the fault (400 a bad

@@ -29,11 +29,24 @@ async function api(path, body) {
   return json;
 }
 
-// GET of a binary answer (/api/mesh and /api/labels with ?format=binary): its bytes.
-async function apiBytes(path) {
-  const res = await fetch(path, { headers: { 'X-Editor-Token': token } });
+// GET of a binary answer (/api/mesh and /api/labels with ?format=binary), or POST of
+// `body` as JSON (/api/edit?labels=binary): its bytes.
+async function apiBytes(path, body) {
+  const headers = { 'X-Editor-Token': token };
+  const init = body === undefined ? { headers } : {
+    method: 'POST', headers: { ...headers, 'Content-Type': 'application/json' }, body: JSON.stringify(body) };
+  const res = await fetch(path, init);
   if (!res.ok) throw new Error((await res.json().catch(() => ({}))).error || res.statusText);
   return res.arrayBuffer();
+}
+
+// One edit and its labels in one message (POST /api/edit?labels=binary: uint32 J, the
+// state's JSON in J bytes, then the labels as /api/labels?format=binary&vertices=0).
+async function apiEdit(request) {
+  const bytes = await apiBytes('/api/edit?labels=binary', request);
+  const length = new DataView(bytes, 0, 4).getUint32(0, true);
+  const state = JSON.parse(new TextDecoder().decode(new Uint8Array(bytes, 4, length)));
+  return { state, labels: bytes, labelsAt: 4 + length };
 }
 
 function status(text, isError = false) {
@@ -207,19 +220,24 @@ async function loadBoundaries() {
   render();
 }
 
+// Draws the labels at byte `at` of `bytes` (as GET /api/labels?format=binary&vertices=0
+// gives them: four uint32, the patches, the triangles, 0 and the bytes of an id, 1, 2 or
+// 4; then the patch of every triangle).
+function showLabels(bytes, at) {
+  const header = new DataView(bytes, at, 16);
+  const Ids = { 1: Uint8Array, 2: Uint16Array, 4: Uint32Array }[header.getUint32(12, true)];
+  if (!Ids) throw new Error('labels: an id width that is not 1, 2 or 4 bytes');
+  facePatches = new Ids(bytes, at + 16, header.getUint32(4, true));
+  palette = patchPalette(header.getUint32(0, true));
+  colorFaces();
+}
+
 // Fetches and draws the labels; resolves to the milliseconds of the two.
 async function loadLabels() {
-  // GET /api/labels?format=binary&vertices=0: four uint32 (patches, triangles, 0, the
-  // bytes of an id: 1, 2 or 4), then the patch of every triangle
   const t0 = performance.now();
   const bytes = await apiBytes('/api/labels?format=binary&vertices=0');
   const t1 = performance.now();
-  const header = new DataView(bytes, 0, 16);
-  const Ids = { 1: Uint8Array, 2: Uint16Array, 4: Uint32Array }[header.getUint32(12, true)];
-  if (!Ids) throw new Error('labels: an id width that is not 1, 2 or 4 bytes');
-  facePatches = new Ids(bytes, 16, header.getUint32(4, true));
-  palette = patchPalette(header.getUint32(0, true));
-  colorFaces();
+  showLabels(bytes, 0);
   return { fetch: t1 - t0, draw: performance.now() - t1 };
 }
 
@@ -269,13 +287,13 @@ async function runEdit(request) {
   document.body.style.cursor = 'progress';
   try {
     const t0 = performance.now();
-    const s = await api('/api/edit', request);
+    const { state: s, labels, labelsAt } = await apiEdit(request);
     const t1 = performance.now();
     showState(s);
-    const labelMs = await loadLabels();
-    // the round trip: request, solve, labels fetched, colours redrawn
+    showLabels(labels, labelsAt);
+    // the round trip: request, solve, labels, colours redrawn
     state.lastRoundTripMs = performance.now() - t0;
-    state.lastSplitMs = { edit: t1 - t0, labels: labelMs.fetch, draw: labelMs.draw };
+    state.lastSplitMs = { edit: t1 - t0, draw: state.lastRoundTripMs - (t1 - t0) };
     refreshOverlays(request.op === 'sketch' || request.op === 'undo' || request.op === 'redo');
     status(`${request.op}: ${s.patches} patches (${state.lastRoundTripMs.toFixed(0)} ms)`);
   } catch (e) {

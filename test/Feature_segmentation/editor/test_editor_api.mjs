@@ -304,6 +304,31 @@ try {
   check('8 concurrent edits: all in the history, the state is the last one applied',
         sc2.edits.length === back.edits.length + 8 && sc2.edits[sc2.edits.length - 1] === `alpha ${sc2.alpha}`);
 
+  // ---- an edit answered with its labels (what the page sends): the state and the
+  // triangles' binary labels of that state, in one message
+  const answer = await fetch(url + 'api/edit?labels=binary', { method: 'POST', body: JSON.stringify({ op: 'alpha', value: 0.65 }),
+                                                             headers: { ...auth, 'Content-Type': 'application/json' } });
+  const rb = await answer.arrayBuffer();
+  const jsonBytes = new DataView(rb).getUint32(0, true);
+  const edited = JSON.parse(new TextDecoder().decode(new Uint8Array(rb, 4, jsonBytes)));
+  const afterEdit = await state();
+  const labelsAfter = Buffer.from((await bytes('api/labels?format=binary&vertices=0')).buffer);
+  check('edit?labels=binary: application/octet-stream, the JSON in a multiple of 4 bytes, the state of the edit',
+        answer.status === 200 && answer.headers.get('content-type') === 'application/octet-stream' && jsonBytes % 4 === 0 &&
+        edited.edit_count === afterEdit.edit_count && edited.patches === afterEdit.patches &&
+        edited.cut_cost === afterEdit.cut_cost && edited.last_edit.op === 'alpha' && edited.alpha === 0.65, edited.edit_count);
+  check('edit?labels=binary: then exactly the bytes of labels?format=binary&vertices=0 of that state',
+        rb.byteLength === 4 + jsonBytes + labelsAfter.length &&
+        Buffer.from(rb, 4 + jsonBytes).equals(labelsAfter), `${rb.byteLength} bytes`);
+  const labelsJson = await post('api/edit?labels=json', { op: 'undo' });
+  const refused = await fetch(url + 'api/edit?labels=binary', { method: 'POST', body: JSON.stringify({ op: 'jump' }),
+                                                                headers: { ...auth, 'Content-Type': 'application/json' } });
+  check('edit?labels=json and a refused edit with labels=binary: 400 in JSON, the state unchanged',
+        labelsJson.status === 400 && refused.status === 400 && typeof (await refused.json()).error === 'string' &&
+        (await state()).edit_count === afterEdit.edit_count);
+  check('undo after it: back to the state of the concurrent edits',
+        (await post('api/edit', { op: 'undo' })).body.cut_cost === sc2.cut_cost);
+
   // ---- save, then replay edits.txt with the batch program
   const saved = await post('api/save', {});
   check('save: 200 and the files listed', saved.status === 200 && saved.body.files.includes('edits.txt'));
@@ -321,13 +346,14 @@ try {
         s1.segmentation.cut_cost === sc2.cut_cost, `${s1.segmentation.patches} patches`);
 
   // ---- another crest-line scale (the authors' Q/W/E): recomputed, the history restarts
+  const beforeRestart = await state();
   for (const [what, body] of [['no key', {}], ['a radius over 1', { radius: 2 }],
                               ['a negative threshold', { strength_threshold: -1 }], ['an unknown key', { rings: 3 }],
                               ['a string', { radius: 'wide' }]]) {
     const rr = await post('api/restart', body);
     check(`restart: 400 for ${what}`, rr.status === 400, rr.body.error);
   }
-  check('restart: the refused requests changed nothing', (await state()).edits.length === sc2.edits.length);
+  check('restart: the refused requests changed nothing', (await state()).edit_count === beforeRestart.edit_count);
   const wide = await post('api/restart', { radius: 0.03 });
   check('restart at radius 0.03: the default 0.01 is gone, no edits, alpha back to 0.6',
         wide.status === 200 && wide.body.radius === 0.03 && wide.body.edits.length === 0 && wide.body.alpha === 0.6);
