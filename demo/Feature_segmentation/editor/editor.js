@@ -74,7 +74,7 @@ let triangles = null;       // Uint32Array of the server's triangles
 let positions = null;       // Float32Array of the server's vertices
 let centroids = null;       // Float32Array, 3 per triangle
 let facePatches = null;     // per triangle
-let palette = null;         // per patch: its colour's r, g, b bytes (patchPalette)
+let palette = null;         // per patch: its colour as rgba32 (patchPalette)
 let diagonal = 1;
 const region = new Set();   // painted triangles
 const overlays = { lines: new THREE.Group(), creases: new THREE.Group(), boundaries: new THREE.Group() };
@@ -99,36 +99,36 @@ function patchColor(p, out) {
   return out;
 }
 
-// The bytes r, g, b of patches 0 .. n-1.
-function patchPalette(n) {
-  const c = new THREE.Color();
-  const bytes = new Uint8Array(3 * n);
-  for (let p = 0; p < n; ++p) {
-    patchColor(p, c);
-    bytes[3 * p] = Math.round(255 * c.r);
-    bytes[3 * p + 1] = Math.round(255 * c.g);
-    bytes[3 * p + 2] = Math.round(255 * c.b);
-  }
-  return bytes;
+// A colour's bytes r, g, b and 255 as one uint32 in the platform's byte order, so that
+// one write of a Uint32Array view over the colour buffer stores a vertex's colour.
+const littleEndian = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1;
+function rgba32(c) {
+  const r = Math.round(255 * c.r), g = Math.round(255 * c.g), b = Math.round(255 * c.b);
+  return (littleEndian ? (r | (g << 8) | (b << 16) | (255 << 24)) : ((r << 24) | (g << 16) | (b << 8) | 255)) >>> 0;
 }
 
-// The colours of the faces: the patches' bytes (made once per labels, by loadLabels),
-// written straight into the colour buffer of bytes (a million faces in a few
-// milliseconds); then the painted ones.
+// The colours of patches 0 .. n-1 (rgba32).
+function patchPalette(n) {
+  const c = new THREE.Color();
+  const words = new Uint32Array(n);
+  for (let p = 0; p < n; ++p) words[p] = rgba32(patchColor(p, c));
+  return words;
+}
+
+// The colours of the faces: the patches' colours (made once per labels, by showLabels),
+// written straight into the colour buffer (bytes r, g, b, a per vertex), one uint32 per
+// vertex (a million faces in a few milliseconds); then the painted ones.
 function colorFaces() {
   const colors = mesh.geometry.getAttribute('color');
-  const rgb = colors.array;
-  const c = new THREE.Color();
-  for (let f = 0, k = 0; f < facePatches.length; ++f) {
-    const q = 3 * facePatches[f], r = palette[q], g = palette[q + 1], b = palette[q + 2];
-    for (let end = k + 9; k < end; k += 3) { rgb[k] = r; rgb[k + 1] = g; rgb[k + 2] = b; }
+  const words = new Uint32Array(colors.array.buffer, colors.array.byteOffset, colors.array.length / 4);
+  for (let f = 0, k = 0; f < facePatches.length; ++f, k += 3) {
+    const w = palette[facePatches[f]];
+    words[k] = w; words[k + 1] = w; words[k + 2] = w;
   }
-  const paint = new THREE.Color(0xffe600);
+  const c = new THREE.Color(), paint = new THREE.Color(0xffe600);
   for (const f of region) {
-    const q = 3 * facePatches[f];
-    c.setRGB(palette[q] / 255, palette[q + 1] / 255, palette[q + 2] / 255).lerp(paint, 0.55);
-    const r = Math.round(255 * c.r), g = Math.round(255 * c.g), b = Math.round(255 * c.b);
-    for (let k = 9 * f, end = k + 9; k < end; k += 3) { rgb[k] = r; rgb[k + 1] = g; rgb[k + 2] = b; }
+    const w = rgba32(patchColor(facePatches[f], c).lerp(paint, 0.55));
+    words[3 * f] = w; words[3 * f + 1] = w; words[3 * f + 2] = w;
   }
   colors.needsUpdate = true;
   render();
@@ -148,8 +148,9 @@ function buildMesh(bytes) {
   indexed.computeVertexNormals();
   const geometry = indexed.toNonIndexed();
   const n = triangles.length / 3;
-  // colours as bytes (normalized): a quarter of the floats' upload to the GPU at each edit
-  geometry.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(9 * n), 3, true));
+  // colours as bytes r, g, b, a (normalized): a third of the floats' upload to the GPU at
+  // each edit, and one uint32 write per vertex
+  geometry.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(12 * n), 4, true));
   centroids = new Float32Array(3 * n);
   for (let f = 0; f < n; ++f)
     for (let k = 0; k < 3; ++k)
