@@ -23,6 +23,11 @@
 //              of 1, 2 or 4 that hold the largest patch id (16 + B (T + V) bytes: a
 //              million faces of a part of under 256 patches in 1 MB); with &vertices=0,
 //              V is 0 and the triangles' patches end it (what the page loads)
+//   labels?format=runs (what the page loads: a few hundred kilobytes for a million
+//              faces stored patch by patch), little-endian: uint32 patches, uint32 T,
+//              uint32 R, uint32 B, then R uint32: the end (exclusive) of each run of
+//              consecutive triangles in one patch, then the R runs' patches as
+//              unsigned integers of B bytes (1, 2 or 4, as above): 16 + (4 + B) R bytes
 //   history    ?from=K&count=N (N in 1 .. 1000): {"edit_count", "from", "edits": [lines]}
 //   features   {"ridges", "valleys", "seam_lines", "user": [[x y z ...] per line],
 //               "creases": [x y z x y z per crease edge ...]}
@@ -34,10 +39,11 @@
 //               "amount": D} | {"op": "scale", "faces": [...], "factor": F} |
 //               {"op": "merge", "faces": [...]} | {"op": "sketch", "points": [[x, y, z],
 //               ...], "alpha": A (optional, > 1)} | {"op": "undo"} | {"op": "redo"};
-//               answered with the new state; with ?labels=binary (what the page sends),
-//               with the state and the triangles' patches in one message: uint32 J,
-//               the state's JSON in J bytes (J a multiple of 4, the JSON padded with
-//               spaces), then the labels as ?format=binary&vertices=0 gives them
+//               answered with the new state; with ?labels=binary or ?labels=runs (what
+//               the page sends), with the state and the triangles' patches in one
+//               message: uint32 J, the state's JSON in J bytes (J a multiple of 4, the
+//               JSON padded with spaces), then the labels as ?format=binary&vertices=0
+//               or ?format=runs gives them
 // A request the editor cannot take (bad JSON, an unknown op or key, a missing or
 // non-finite number, a face index out of range, nothing to undo) throws Request_error
 // and changes nothing.
@@ -125,14 +131,14 @@ public:
   /// POST /api/edit?labels=binary: applies one edit and answers with the new state and
   /// the triangles' patches in one message (the layout is at the top of this file).
   /// \throws Request_error if the edit is refused (nothing changes)
-  std::string edit_with_labels(const nlohmann::json& request)
+  std::string edit_with_labels(const nlohmann::json& request, bool runs = false)
   {
     const auto start = std::chrono::steady_clock::now();
     std::lock_guard<std::mutex> lock(m_mutex);
     edit_unlocked(request, start);
     std::string state = state_unlocked().dump();
-    state.resize((state.size() + 3) / 4 * 4, ' '); // the labels' ids start 4-byte aligned
-    const std::string labels = labels_binary_unlocked(false);
+    state.resize((state.size() + 3) / 4 * 4, ' '); // the labels' words start 4-byte aligned
+    const std::string labels = runs ? labels_runs_unlocked() : labels_binary_unlocked(false);
     internal::Little_endian_bytes out(4 + state.size() + labels.size());
     out.u32(state.size());
     out.append(state);
@@ -199,7 +205,40 @@ public:
     return labels_binary_unlocked(vertices);
   }
 
+  /// GET /api/labels?format=runs (the layout is at the top of this file).
+  std::string labels_runs() const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return labels_runs_unlocked();
+  }
+
 private:
+  std::string labels_runs_unlocked() const
+  {
+    const std::vector<std::uint32_t> ids = face_patch_ids();
+    std::vector<std::uint32_t> end, patch;
+    std::uint32_t largest = 0;
+    for(std::size_t i = 0; i < ids.size(); ++i)
+    {
+      if(i + 1 == ids.size() || ids[i + 1] != ids[i])
+      {
+        end.push_back(std::uint32_t(i + 1));
+        patch.push_back(ids[i]);
+        largest = (std::max)(largest, ids[i]);
+      }
+    }
+    const unsigned width = largest < 0x100u ? 1 : largest < 0x10000u ? 2 : 4;
+    internal::Little_endian_bytes out(16 + (4 + width) * end.size());
+    out.u32(m_run->pipeline.segmentation->number_of_patches());
+    out.u32(ids.size());
+    out.u32(end.size());
+    out.u32(width);
+    for(std::uint32_t e : end) out.u32(e);
+    char* const block = out.id_block(patch.size(), width);
+    for(std::size_t r = 0; r < patch.size(); ++r) internal::Little_endian_bytes::write_id(block + width * r, patch[r], width);
+    return out.take();
+  }
+
   std::string labels_binary_unlocked(bool vertices) const
   {
     const Mesh& m = m_run->pipeline.mesh;

@@ -330,9 +330,16 @@ inline Http_answer answer_request(const http::request<http::string_body>& req, E
       {
         const auto format = query->find("format");
         const std::string value = format == query->end() ? "json" : format->second;
-        if(value != "json" && value != "binary")
-          return error_answer(http::status::bad_request, path.substr(5) + ": 'format' must be json or binary");
         const bool mesh = path == "/api/mesh";
+        if(value == "runs" && !mesh)
+        {
+          if(query->find("vertices") != query->end())
+            return error_answer(http::status::bad_request, "'vertices' is 0 or 1, on labels?format=binary only");
+          return Http_answer{http::status::ok, session.labels_runs(), "application/octet-stream", false};
+        }
+        if(value != "json" && value != "binary")
+          return error_answer(http::status::bad_request, path.substr(5) + ": 'format' must be json or binary" +
+                                                         (mesh ? "" : " or runs"));
         const auto vertices = query->find("vertices");
         if(vertices != query->end() && (mesh || value != "binary" || (vertices->second != "0" && vertices->second != "1")))
           return error_answer(http::status::bad_request, "'vertices' is 0 or 1, on labels?format=binary only");
@@ -368,11 +375,12 @@ inline Http_answer answer_request(const http::request<http::string_body>& req, E
       if(path == "/api/edit")
       {
         const auto labels = query->find("labels");
-        if(labels != query->end() && labels->second != "binary")
-          return error_answer(http::status::bad_request, "edit: 'labels' must be binary");
+        if(labels != query->end() && labels->second != "binary" && labels->second != "runs")
+          return error_answer(http::status::bad_request, "edit: 'labels' must be binary or runs");
         if(labels == query->end())
           return answer_json_request(req.body(), [&](const nlohmann::json& j) { return session.edit(j); });
-        return answer_json_request(req.body(), [&](const nlohmann::json& j) { return session.edit_with_labels(j); },
+        const bool runs = labels->second == "runs";
+        return answer_json_request(req.body(), [&](const nlohmann::json& j) { return session.edit_with_labels(j, runs); },
                                    "application/octet-stream");
       }
       if(path == "/api/restart")

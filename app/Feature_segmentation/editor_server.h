@@ -4,11 +4,11 @@
 // edits on two worker threads) bound to 127.0.0.1 by default serves the page (editor/ in
 // the build: HTML, JavaScript and three.js, read into memory at start, nothing fetched at
 // run time) and the JSON interface of editor_api.h:
-//   GET  /api/state, /api/mesh?format=json|binary, /api/labels?format=json|binary,
+//   GET  /api/state, /api/mesh?format=json|binary, /api/labels?format=json|binary|runs,
 //        /api/features, /api/boundaries?smooth=0|1,
 //        /api/history?from=K&count=N
 //   POST /api/edit   one edit (body: JSON), answered with the new state
-//        (?labels=binary: with the state and the binary labels in one message)
+//        (?labels=binary or runs: with the state and the labels in one message)
 //   POST /api/restart  another crest-line scale: {"radius": X, "strength_threshold": T}
 //   POST /api/save   writes the outputs and edits.txt into --output-dir
 // A refused request gets a 4xx status and {"error": "..."} naming the fault (400 a bad

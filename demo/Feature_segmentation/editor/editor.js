@@ -29,8 +29,8 @@ async function api(path, body) {
   return json;
 }
 
-// GET of a binary answer (/api/mesh and /api/labels with ?format=binary), or POST of
-// `body` as JSON (/api/edit?labels=binary): its bytes.
+// GET of a binary answer (/api/mesh?format=binary, /api/labels?format=runs), or POST
+// of `body` as JSON (/api/edit?labels=runs): its bytes.
 async function apiBytes(path, body) {
   const headers = { 'X-Editor-Token': token };
   const init = body === undefined ? { headers } : {
@@ -40,10 +40,10 @@ async function apiBytes(path, body) {
   return res.arrayBuffer();
 }
 
-// One edit and its labels in one message (POST /api/edit?labels=binary: uint32 J, the
-// state's JSON in J bytes, then the labels as /api/labels?format=binary&vertices=0).
+// One edit and its labels in one message (POST /api/edit?labels=runs: uint32 J, the
+// state's JSON in J bytes, then the labels as /api/labels?format=runs).
 async function apiEdit(request) {
-  const bytes = await apiBytes('/api/edit?labels=binary', request);
+  const bytes = await apiBytes('/api/edit?labels=runs', request);
   const length = new DataView(bytes, 0, 4).getUint32(0, true);
   const state = JSON.parse(new TextDecoder().decode(new Uint8Array(bytes, 4, length)));
   return { state, labels: bytes, labelsAt: 4 + length };
@@ -74,6 +74,7 @@ let triangles = null;       // Uint32Array of the server's triangles
 let positions = null;       // Float32Array of the server's vertices
 let centroids = null;       // Float32Array, 3 per triangle
 let facePatches = null;     // per triangle
+let runEnds = null, runPatches = null; // the labels as runs of triangles (showLabels)
 let palette = null;         // per patch: its colour as rgba32 (patchPalette)
 let diagonal = 1;
 const region = new Set();   // painted triangles
@@ -121,10 +122,8 @@ function patchPalette(n) {
 function colorFaces() {
   const colors = mesh.geometry.getAttribute('color');
   const words = new Uint32Array(colors.array.buffer, colors.array.byteOffset, colors.array.length / 4);
-  for (let f = 0, k = 0; f < facePatches.length; ++f, k += 3) {
-    const w = palette[facePatches[f]];
-    words[k] = w; words[k + 1] = w; words[k + 2] = w;
-  }
+  for (let r = 0, start = 0; r < runEnds.length; start = runEnds[r++])
+    words.fill(palette[runPatches[r]], 3 * start, 3 * runEnds[r]);
   const c = new THREE.Color(), paint = new THREE.Color(0xffe600);
   for (const f of region) {
     const w = rgba32(patchColor(facePatches[f], c).lerp(paint, 0.55));
@@ -221,14 +220,19 @@ async function loadBoundaries() {
   render();
 }
 
-// Draws the labels at byte `at` of `bytes` (as GET /api/labels?format=binary&vertices=0
-// gives them: four uint32, the patches, the triangles, 0 and the bytes of an id, 1, 2 or
-// 4; then the patch of every triangle).
+// Draws the labels at byte `at` of `bytes`, as GET /api/labels?format=runs gives them
+// (four uint32: the patches, the triangles T, the runs R and the bytes of an id, 1, 2 or
+// 4; then the end of every run of triangles of one patch, uint32; then the runs'
+// patches).
 function showLabels(bytes, at) {
   const header = new DataView(bytes, at, 16);
   const Ids = { 1: Uint8Array, 2: Uint16Array, 4: Uint32Array }[header.getUint32(12, true)];
   if (!Ids) throw new Error('labels: an id width that is not 1, 2 or 4 bytes');
-  facePatches = new Ids(bytes, at + 16, header.getUint32(4, true));
+  const runs = header.getUint32(8, true);
+  runEnds = new Uint32Array(bytes, at + 16, runs);
+  runPatches = new Ids(bytes, at + 16 + 4 * runs, runs);
+  facePatches = new Ids(header.getUint32(4, true));
+  for (let r = 0, start = 0; r < runs; start = runEnds[r++]) facePatches.fill(runPatches[r], start, runEnds[r]);
   palette = patchPalette(header.getUint32(0, true));
   colorFaces();
 }
@@ -236,7 +240,7 @@ function showLabels(bytes, at) {
 // Fetches and draws the labels; resolves to the milliseconds of the two.
 async function loadLabels() {
   const t0 = performance.now();
-  const bytes = await apiBytes('/api/labels?format=binary&vertices=0');
+  const bytes = await apiBytes('/api/labels?format=runs');
   const t1 = performance.now();
   showLabels(bytes, 0);
   return { fetch: t1 - t0, draw: performance.now() - t1 };

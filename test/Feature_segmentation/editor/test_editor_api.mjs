@@ -207,6 +207,29 @@ try {
         bfHeader.getUint32(8, true) === 0 &&
         new (idArray[bfWidth] || Uint8Array)(bf.buffer, 16, ref.faces).every((p, i) => p === blFaces[i]),
         `${bf.buffer.byteLength} bytes`);
+  // runs of triangles in one patch: ends increasing to T, no two neighbouring runs in one
+  // patch, and every triangle's patch that of the binary labels
+  const decodeRuns = (buffer, at) => {
+    const h = new DataView(buffer, at, 16);
+    const runs = h.getUint32(8, true), w = h.getUint32(12, true);
+    const ends = new Uint32Array(buffer, at + 16, runs), ids = new (idArray[w] || Uint8Array)(buffer, at + 16 + 4 * runs, runs);
+    const faces = [];
+    let ordered = true;
+    for (let r = 0, start = 0; r < runs; start = ends[r++]) {
+      ordered &&= ends[r] > start && (r === 0 || ids[r] !== ids[r - 1]);
+      for (let f = start; f < ends[r]; ++f) faces.push(ids[r]);
+    }
+    return { patches: h.getUint32(0, true), triangles: h.getUint32(4, true), runs, width: w, bytes: 16 + (4 + w) * runs,
+             ordered: ordered && (runs === 0 || ends[runs - 1] === h.getUint32(4, true)), faces };
+  };
+  const br = await bytes('api/labels?format=runs');
+  const runs0 = decodeRuns(br.buffer, 0);
+  check(`labels?format=runs: ${runs0.runs} runs, ordered, of the JSON labels' id width, every triangle's patch`,
+        br.type === 'application/octet-stream' && br.buffer.byteLength === runs0.bytes && runs0.ordered &&
+        runs0.patches === ref.patches && runs0.triangles === ref.faces && runs0.width === idWidth(l0.face_patches) &&
+        runs0.faces.length === ref.faces && l0.face_patches.every((p, i) => runs0.faces[i] === p),
+        `${br.buffer.byteLength} bytes`);
+  check('labels: format=runs with vertices is refused', (await get('api/labels?format=runs&vertices=0')).status === 400);
   check('labels: vertices=2, and vertices on JSON labels or on the mesh, are refused',
         (await get('api/labels?format=binary&vertices=2')).status === 400 &&
         (await get('api/labels?vertices=0')).status === 400 && (await get('api/mesh?format=binary&vertices=0')).status === 400);
@@ -326,6 +349,18 @@ try {
   check('edit?labels=json and a refused edit with labels=binary: 400 in JSON, the state unchanged',
         labelsJson.status === 400 && refused.status === 400 && typeof (await refused.json()).error === 'string' &&
         (await state()).edit_count === afterEdit.edit_count);
+  const runsAnswer = await fetch(url + 'api/edit?labels=runs', { method: 'POST', body: JSON.stringify({ op: 'alpha', value: 0.7 }),
+                                                                headers: { ...auth, 'Content-Type': 'application/json' } });
+  const ra = await runsAnswer.arrayBuffer();
+  const raJson = new DataView(ra).getUint32(0, true);
+  const raState = JSON.parse(new TextDecoder().decode(new Uint8Array(ra, 4, raJson)));
+  const raRuns = decodeRuns(ra, 4 + raJson);
+  const raLabels = (await labels()).face_patches;
+  check('edit?labels=runs: the state of the edit, then its labels as labels?format=runs, every triangle\'s patch',
+        runsAnswer.status === 200 && raJson % 4 === 0 && raState.alpha === 0.7 && ra.byteLength === 4 + raJson + raRuns.bytes &&
+        raRuns.ordered && raRuns.patches === raState.patches && raLabels.every((p, i) => raRuns.faces[i] === p),
+        `${raRuns.runs} runs`);
+  await post('api/edit', { op: 'undo' });
   check('undo after it: back to the state of the concurrent edits',
         (await post('api/edit', { op: 'undo' })).body.cut_cost === sc2.cut_cost);
 
