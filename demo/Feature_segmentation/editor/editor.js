@@ -75,7 +75,6 @@ let positions = null;       // Float32Array of the server's vertices
 let centroids = null;       // Float32Array, 3 per triangle
 let facePatches = null;     // per triangle
 let runEnds = null, runPatches = null; // the labels as runs of triangles (showLabels)
-let palette = null;         // per patch: its colour as rgba32 (patchPalette)
 let diagonal = 1;
 const region = new Set();   // painted triangles
 const overlays = { lines: new THREE.Group(), creases: new THREE.Group(), boundaries: new THREE.Group() };
@@ -100,37 +99,71 @@ function patchColor(p, out) {
   return out;
 }
 
-// A colour's bytes r, g, b and 255 as one uint32 in the platform's byte order, so that
-// one write of a Uint32Array view over the colour buffer stores a vertex's colour.
-const littleEndian = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1;
-function rgba32(c) {
-  const r = Math.round(255 * c.r), g = Math.round(255 * c.g), b = Math.round(255 * c.b);
-  return (littleEndian ? (r | (g << 8) | (b << 16) | (255 << 24)) : ((r << 24) | (g << 16) | (b << 8) | 255)) >>> 0;
+// The colours are looked up on the GPU: a texture holds the patch of every triangle
+// (bit 31: painted), another the colour of every patch, and the vertex shader reads
+// both at its triangle (gl_VertexID / 3 of the non-indexed mesh). An edit uploads the
+// triangles' patches (4 bytes per triangle) and the palette, not three colours per
+// triangle.
+const TEXTURE_WIDTH = 2048;   // texels per row of both textures
+const PAINTED = 0x80000000;   // a painted triangle's bit in its texel
+let faceTexture = null, paletteTexture = null;
+
+// A texture of `count` texels of `components` elements of `Array`, TEXTURE_WIDTH a row.
+function dataTexture(Array, count, format, type, internalFormat) {
+  const rows = Math.max(1, Math.ceil(count / TEXTURE_WIDTH));
+  const channels = format === THREE.RGBAFormat ? 4 : 1;
+  const t = new THREE.DataTexture(new Array(channels * TEXTURE_WIDTH * rows), TEXTURE_WIDTH, rows, format, type);
+  t.internalFormat = internalFormat;
+  t.minFilter = t.magFilter = THREE.NearestFilter;
+  t.generateMipmaps = false;
+  t.needsUpdate = true;
+  return t;
 }
 
-// The colours of patches 0 .. n-1 (rgba32).
+// The bytes r, g, b and 255 of patches 0 .. n-1, in a texture.
 function patchPalette(n) {
   const c = new THREE.Color();
-  const words = new Uint32Array(n);
-  for (let p = 0; p < n; ++p) words[p] = rgba32(patchColor(p, c));
-  return words;
+  const t = dataTexture(Uint8Array, n, THREE.RGBAFormat, THREE.UnsignedByteType, 'RGBA8');
+  const bytes = t.image.data;
+  for (let p = 0; p < n; ++p) {
+    patchColor(p, c);
+    bytes[4 * p] = Math.round(255 * c.r);
+    bytes[4 * p + 1] = Math.round(255 * c.g);
+    bytes[4 * p + 2] = Math.round(255 * c.b);
+    bytes[4 * p + 3] = 255;
+  }
+  return t;
 }
 
-// The colours of the faces: the patches' colours (made once per labels, by showLabels),
-// written straight into the colour buffer (bytes r, g, b, a per vertex), one uint32 per
-// vertex (a million faces in a few milliseconds); then the painted ones.
+// The patches of the triangles into their texture (one fill per run), the painted ones
+// marked; then a redraw.
 function colorFaces() {
-  const colors = mesh.geometry.getAttribute('color');
-  const words = new Uint32Array(colors.array.buffer, colors.array.byteOffset, colors.array.length / 4);
-  for (let r = 0, start = 0; r < runEnds.length; start = runEnds[r++])
-    words.fill(palette[runPatches[r]], 3 * start, 3 * runEnds[r]);
-  const c = new THREE.Color(), paint = new THREE.Color(0xffe600);
-  for (const f of region) {
-    const w = rgba32(patchColor(facePatches[f], c).lerp(paint, 0.55));
-    words[3 * f] = w; words[3 * f + 1] = w; words[3 * f + 2] = w;
-  }
-  colors.needsUpdate = true;
+  const ids = faceTexture.image.data;
+  for (let r = 0, start = 0; r < runEnds.length; start = runEnds[r++]) ids.fill(runPatches[r], start, runEnds[r]);
+  for (const f of region) ids[f] = (facePatches[f] | PAINTED) >>> 0;
+  faceTexture.needsUpdate = true;
   render();
+}
+
+// Mesh material: Lambert, its vertex colour replaced by the lookup above.
+function patchMaterial() {
+  const material = new THREE.MeshLambertMaterial({
+    vertexColors: true, side: THREE.DoubleSide, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
+  material.onBeforeCompile = (shader) => {
+    shader.uniforms.faceIds = { get value() { return faceTexture; } };
+    shader.uniforms.patchColors = { get value() { return paletteTexture; } };
+    shader.uniforms.paintColor = { value: new THREE.Color(0xffe600) };
+    shader.vertexShader = `uniform highp usampler2D faceIds;
+uniform sampler2D patchColors;
+uniform vec3 paintColor;
+` + shader.vertexShader.replace('#include <color_vertex>', `
+  int face = gl_VertexID / 3;
+  uint id = texelFetch(faceIds, ivec2(face % ${TEXTURE_WIDTH}, face / ${TEXTURE_WIDTH}), 0).r;
+  int patchId = int(id & 0x7fffffffu);
+  vColor = texelFetch(patchColors, ivec2(patchId % ${TEXTURE_WIDTH}, patchId / ${TEXTURE_WIDTH}), 0).rgb;
+  if ((id & 0x80000000u) != 0u) vColor = mix(vColor, paintColor, 0.55);`);
+  };
+  return material;
 }
 
 // `bytes`: GET /api/mesh?format=binary (editor_api.h: two uint32 counts, the float64
@@ -147,16 +180,13 @@ function buildMesh(bytes) {
   indexed.computeVertexNormals();
   const geometry = indexed.toNonIndexed();
   const n = triangles.length / 3;
-  // colours as bytes r, g, b, a (normalized): a third of the floats' upload to the GPU at
-  // each edit, and one uint32 write per vertex
-  geometry.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(12 * n), 4, true));
+  faceTexture = dataTexture(Uint32Array, n, THREE.RedIntegerFormat, THREE.UnsignedIntType, 'R32UI');
   centroids = new Float32Array(3 * n);
   for (let f = 0; f < n; ++f)
     for (let k = 0; k < 3; ++k)
       centroids[3 * f + k] = (positions[3 * triangles[3 * f] + k] + positions[3 * triangles[3 * f + 1] + k] +
                               positions[3 * triangles[3 * f + 2] + k]) / 3;
-  mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
-    vertexColors: true, side: THREE.DoubleSide, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+  mesh = new THREE.Mesh(geometry, patchMaterial());
   scene.add(mesh);
   geometry.computeBoundingSphere();
   const s = geometry.boundingSphere;
@@ -233,7 +263,8 @@ function showLabels(bytes, at) {
   runPatches = new Ids(bytes, at + 16 + 4 * runs, runs);
   facePatches = new Ids(header.getUint32(4, true));
   for (let r = 0, start = 0; r < runs; start = runEnds[r++]) facePatches.fill(runPatches[r], start, runEnds[r]);
-  palette = patchPalette(header.getUint32(0, true));
+  if (paletteTexture) paletteTexture.dispose();
+  paletteTexture = patchPalette(header.getUint32(0, true));
   colorFaces();
 }
 

@@ -37,6 +37,8 @@ try {
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
+  // WebGL's errors (a shader that does not compile) reach the console, not pageerror
+  page.on('console', (m) => { if (m.type() === 'error' && /WebGL|Shader/.test(m.text())) errors.push(m.text().slice(0, 300)); });
   await page.goto(editor.page); // the printed address, with its token
   await page.waitForFunction(() => window.editor && window.editor.ready === true, null, { timeout: 60000 });
   const patches = async () => Number(await page.textContent('#patches'));
@@ -146,7 +148,7 @@ try {
         refined.split(' ').length === painted + 3, refined.slice(0, 40) + '...');
   // the feature lines and boundaries are drawn after the colours: wait for them
   await page.waitForFunction(() => window.editor.overlaysPending === 0, null, { timeout: 30000 });
-  check('no script error on the page', errors.length === 0, errors.join('; '));
+  check('no script or WebGL error on the page', errors.length === 0, errors.join('; '));
   await page.screenshot({ path: screenshot });
   console.log(`screenshot: ${screenshot}`);
 } finally {
