@@ -3,7 +3,8 @@
 // the editor's session (editor_api.h, what `feature_segmentation edit` serves) is built
 // at the defaults, then every kind of edit is sent as the page sends it, as JSON, N times
 // (--repeat, default 15): the time of the edit request (parse, region, library edit,
-// new state) and of the labels the page fetches next; median and maximum.
+// new state) and of the triangles' patches as runs, which the page gets with the edit
+// (labels?format=runs); median and maximum.
 // Meshes: fandisk (12,946 faces, from CGAL's data), fandisk subdivided flat twice
 // (207,136 faces, made here), and rockerarm (41k faces) from the paper's models in
 // --data DIR or $FEATURE_SEGMENTATION_DATA (skipped, with a message, when absent).
@@ -117,7 +118,7 @@ void bench(const std::string& name, const std::string& path, int repeat, std::ve
       const nlohmann::json state = session.edit(request);
       edit.push_back(seconds_since(t0));
       t0 = std::chrono::steady_clock::now();
-      const std::string l = session.labels();
+      const std::string l = session.labels_runs();
       labels.push_back(seconds_since(t0));
       patches = state["patches"].get<std::size_t>();
       after(r);
@@ -276,7 +277,8 @@ int main(int argc, char** argv)
     return 1;
   }
   std::cout << "Editor answer times, " << fs_bench::cpu_name() << ", one thread, median of " << repeat
-            << " (ms; edit = the POST /api/edit handler's work, labels = the GET /api/labels that follows;"
+            << " (ms; edit = the POST /api/edit handler's work, labels = the triangles' patches as runs, which the"
+            << " page gets with the edit;"
             << " (library): the Feature_aligned_segmentation edit, of which solve = weights of G' + solve + patch"
             << " ids, labels = vertex_patches())\n\n"
             << "| mesh | faces | edit | patches | edit median | edit max | of which solve | labels median |\n"
