@@ -12,6 +12,8 @@
 
 #include "mesh_soup.h"
 
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
+
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -109,26 +111,30 @@ inline bool same_face(const Mesh_soup& soup, std::size_t f, std::size_t g)
   return canonical_face(soup.face(f), n) == canonical_face(soup.face(g), n);
 }
 
-/// For each face, the first face equal to it (itself if it is the first).
+/// For each face, the first face equal to it (itself if it is the first); the faces are
+/// looked at by TBB's threads (the same result at any count).
 inline std::vector<std::uint32_t> first_equal_face(const Mesh_soup& soup, const Vertex_corners& vc)
 {
   std::vector<std::uint32_t> result(soup.number_of_faces());
-  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
-  {
-    result[f] = static_cast<std::uint32_t>(f);
-    const std::uint32_t v = *std::min_element(soup.face(f), soup.face(f) + soup.face_size(f));
-    for(std::uint32_t k = vc.begin[v]; k < vc.begin[v + 1]; ++k)
+  CGAL::Feature_segmentation::internal::for_each_range(soup.number_of_faces(), true, 16384,
+                                                       [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
     {
-      const std::uint32_t g = vc.face_of[vc.corners[k]];
-      if(g >= f)
-        break; // corners are in face order
-      if(same_face(soup, f, g))
+      result[f] = static_cast<std::uint32_t>(f);
+      const std::uint32_t v = *std::min_element(soup.face(f), soup.face(f) + soup.face_size(f));
+      for(std::uint32_t k = vc.begin[v]; k < vc.begin[v + 1]; ++k)
       {
-        result[f] = result[g];
-        break;
+        const std::uint32_t g = vc.face_of[vc.corners[k]];
+        if(g >= f)
+          break; // corners are in face order
+        if(same_face(soup, f, g))
+        {
+          result[f] = g; // the first face equal to f: no earlier one is equal to g either
+          break;
+        }
       }
     }
-  }
+  });
   return result;
 }
 
@@ -189,69 +195,98 @@ Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
         return &points[soup.indices[k]];
     return nullptr;
   };
-  for(std::uint32_t c = 0; c < soup.indices.size(); ++c)
+  // Each corner on its own, by TBB's threads; what they find is gathered in corner
+  // order, so that the counts and the first fold (the error) are those of one pass.
+  const std::uint32_t none = no_corner;
+  struct Found
   {
-    const std::uint32_t a = soup.indices[c];
-    const std::uint32_t b = soup.indices[next_corner(soup, vc, c)];
-    std::uint32_t faces = 1, other = no_corner;
-    bool same_direction = false;
-    for(std::uint32_t k = vc.begin[b]; k < vc.begin[b + 1]; ++k) // b -> a elsewhere
+    std::size_t non_manifold_edges = 0;
+    bool inconsistent = false;
+    std::uint32_t first_fold = no_corner, fold_other = no_corner;
+  };
+  const std::size_t corner_count = soup.indices.size();
+  const std::size_t chunk = 16384, chunks = (corner_count + chunk - 1) / chunk;
+  std::vector<Found> found(chunks);
+  CGAL::Feature_segmentation::internal::for_each_range(chunks, true, 1, [&](std::size_t first_chunk, std::size_t last_chunk) {
+   for(std::size_t ch = first_chunk; ch < last_chunk; ++ch)
+   {
+    Found& out = found[ch];
+    const std::uint32_t chunk_end = std::uint32_t((std::min)(corner_count, (ch + 1) * chunk));
+    for(std::uint32_t c = std::uint32_t(ch * chunk); c < chunk_end && out.first_fold == none; ++c)
     {
-      const std::uint32_t d = vc.corners[k];
-      if(vc.face_of[d] != vc.face_of[c] && soup.indices[next_corner(soup, vc, d)] == a)
+      const std::uint32_t a = soup.indices[c];
+      const std::uint32_t b = soup.indices[next_corner(soup, vc, c)];
+      std::uint32_t faces = 1, other = no_corner;
+      bool same_direction = false;
+      for(std::uint32_t k = vc.begin[b]; k < vc.begin[b + 1]; ++k) // b -> a elsewhere
       {
-        ++faces;
-        other = d;
+        const std::uint32_t d = vc.corners[k];
+        if(vc.face_of[d] != vc.face_of[c] && soup.indices[next_corner(soup, vc, d)] == a)
+        {
+          ++faces;
+          other = d;
+        }
+      }
+      for(std::uint32_t k = vc.begin[a]; k < vc.begin[a + 1]; ++k) // a -> b elsewhere
+      {
+        const std::uint32_t d = vc.corners[k];
+        if(d != c && soup.indices[next_corner(soup, vc, d)] == b)
+        {
+          ++faces;
+          other = d;
+          same_direction = true;
+        }
+      }
+      if(faces > 2)
+      {
+        // counted at the corner of its smallest face, so once per edge
+        bool first = true;
+        for(std::uint32_t k = vc.begin[a]; first && k < vc.begin[a + 1]; ++k)
+        {
+          const std::uint32_t d = vc.corners[k], n = soup.indices[next_corner(soup, vc, d)];
+          first = !(n == b && vc.face_of[d] < vc.face_of[c]);
+        }
+        for(std::uint32_t k = vc.begin[b]; first && k < vc.begin[b + 1]; ++k)
+        {
+          const std::uint32_t d = vc.corners[k], n = soup.indices[next_corner(soup, vc, d)];
+          first = !(n == a && vc.face_of[d] < vc.face_of[c]);
+        }
+        if(first) ++out.non_manifold_edges;
+        out.inconsistent = true; // no twins: CGAL's orientation builds the mesh
+        continue;
+      }
+      if(faces < 2)
+        continue;
+      if(same_direction)
+        out.inconsistent = true;
+      else
+        topology.twin[c] = other;
+      // Two faces folded onto each other have opposite normals; only a pair whose double
+      // normals are close to opposite needs the exact test.
+      if(c < other && nearly_opposite_normals(points, soup.face(vc.face_of[c]), soup.face(vc.face_of[other])))
+      {
+        const Point& p = points[a];
+        const Point& q = points[b];
+        const Point* r = apex(c, p, q);
+        const Point* s = apex(other, p, q);
+        if(r != nullptr && s != nullptr && CGAL::coplanar(p, q, *r, *s) &&
+           CGAL::coplanar_orientation(p, q, *r, *s) == CGAL::POSITIVE)
+        {
+          out.first_fold = c;
+          out.fold_other = other;
+        }
       }
     }
-    for(std::uint32_t k = vc.begin[a]; k < vc.begin[a + 1]; ++k) // a -> b elsewhere
-    {
-      const std::uint32_t d = vc.corners[k];
-      if(d != c && soup.indices[next_corner(soup, vc, d)] == b)
-      {
-        ++faces;
-        other = d;
-        same_direction = true;
-      }
-    }
-    if(faces > 2)
-    {
-      // counted at the corner of its smallest face, so once per edge
-      bool first = true;
-      for(std::uint32_t k = vc.begin[a]; first && k < vc.begin[a + 1]; ++k)
-      {
-        const std::uint32_t d = vc.corners[k], n = soup.indices[next_corner(soup, vc, d)];
-        first = !(n == b && vc.face_of[d] < vc.face_of[c]);
-      }
-      for(std::uint32_t k = vc.begin[b]; first && k < vc.begin[b + 1]; ++k)
-      {
-        const std::uint32_t d = vc.corners[k], n = soup.indices[next_corner(soup, vc, d)];
-        first = !(n == a && vc.face_of[d] < vc.face_of[c]);
-      }
-      if(first) ++topology.number_of_non_manifold_edges;
-      topology.is_consistently_oriented = false; // no twins: CGAL's orientation builds the mesh
-      continue;
-    }
-    if(faces < 2)
-      continue;
-    if(same_direction)
-      topology.is_consistently_oriented = false;
-    else
-      topology.twin[c] = other;
-    // Two faces folded onto each other have opposite normals; only a pair whose double
-    // normals are close to opposite needs the exact test.
-    if(c < other && nearly_opposite_normals(points, soup.face(vc.face_of[c]), soup.face(vc.face_of[other])))
-    {
-      const Point& p = points[a];
-      const Point& q = points[b];
-      const Point* r = apex(c, p, q);
-      const Point* s = apex(other, p, q);
-      if(r != nullptr && s != nullptr && CGAL::coplanar(p, q, *r, *s) &&
-         CGAL::coplanar_orientation(p, q, *r, *s) == CGAL::POSITIVE)
-        throw Input_error(path + ": " + face_name(soup, vc.face_of[c]) + " and " +
-                          face_name(soup, vc.face_of[other]) +
-                          " overlap (folded onto each other across an edge)");
-    }
+   }
+  });
+  for(const Found& out : found)
+  {
+    if(out.first_fold != none)
+      throw Input_error(path + ": " + face_name(soup, vc.face_of[out.first_fold]) + " and " +
+                        face_name(soup, vc.face_of[out.fold_other]) +
+                        " overlap (folded onto each other across an edge)");
+    topology.number_of_non_manifold_edges += out.non_manifold_edges;
+    if(out.inconsistent) topology.is_consistently_oriented = false;
   }
   if(!topology.is_consistently_oriented)
     return topology;
@@ -259,38 +294,43 @@ Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
   // One fan per vertex: turning around v from corner to corner across edges must visit
   // every corner at v. A walk starts at a border (if there is one) so that it covers an
   // open fan whole.
-  for(std::uint32_t v = 0; v + 1 < vc.begin.size(); ++v)
-  {
-    const std::uint32_t first = vc.begin[v], last = vc.begin[v + 1];
-    if(last - first < 2)
-      continue;
-    std::uint32_t start = vc.corners[first];
-    for(std::uint32_t k = first; k < last; ++k)
-      if(topology.twin[previous_corner(soup, vc, vc.corners[k])] == no_corner)
+  std::vector<char> pinched_in(chunks == 0 ? 0 : (vc.begin.size() - 1 + chunk - 1) / chunk, 0);
+  CGAL::Feature_segmentation::internal::for_each_range(pinched_in.size(), true, 1, [&](std::size_t first_chunk, std::size_t last_chunk) {
+   for(std::size_t ch = first_chunk; ch < last_chunk; ++ch)
+   {
+    const std::uint32_t chunk_end = std::uint32_t((std::min)(vc.begin.size() - 1, (ch + 1) * chunk));
+    for(std::uint32_t v = std::uint32_t(ch * chunk); v < chunk_end && !pinched_in[ch]; ++v)
+    {
+      const std::uint32_t first = vc.begin[v], last = vc.begin[v + 1];
+      if(last - first < 2)
+        continue;
+      std::uint32_t start = vc.corners[first];
+      for(std::uint32_t k = first; k < last; ++k)
+        if(topology.twin[previous_corner(soup, vc, vc.corners[k])] == no_corner)
+        {
+          start = vc.corners[k]; // the edge into v from this face is on the border
+          break;
+        }
+      std::uint32_t visited = 1;
+      for(std::uint32_t c = start;;)
       {
-        start = vc.corners[k]; // the edge into v from this face is on the border
-        break;
+        // Across the edge from v to the next vertex, to the twin's face, whose corner at v
+        // follows the twin corner.
+        const std::uint32_t t = topology.twin[c];
+        if(t == no_corner)
+          break;
+        c = next_corner(soup, vc, t);
+        if(c == start)
+          break;
+        if(++visited > last - first)
+          break;
       }
-    std::uint32_t visited = 1;
-    for(std::uint32_t c = start;;)
-    {
-      // Across the edge from v to the next vertex, to the twin's face, whose corner at v
-      // follows the twin corner.
-      const std::uint32_t t = topology.twin[c];
-      if(t == no_corner)
-        break;
-      c = next_corner(soup, vc, t);
-      if(c == start)
-        break;
-      if(++visited > last - first)
-        break;
+      if(visited != last - first)
+        pinched_in[ch] = 1;
     }
-    if(visited != last - first)
-    {
-      topology.has_manifold_vertices = false;
-      return topology;
-    }
-  }
+   }
+  });
+  topology.has_manifold_vertices = std::find(pinched_in.begin(), pinched_in.end(), 1) == pinched_in.end();
   return topology;
 }
 
