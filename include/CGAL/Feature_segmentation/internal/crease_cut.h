@@ -17,6 +17,7 @@
 #include <CGAL/Feature_segmentation/internal/compact_index.h>
 #include <CGAL/Feature_segmentation/internal/reserve_mesh.h>
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/union_find.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -152,12 +153,141 @@ Crease_sectors crease_sectors(const Mesh_indexing<TriangleMesh>& idx, Crease_cut
   return sectors;
 }
 
-// The cut copy, built face by face in the input's face order, and its indexing; then the
-// maps of halfedges and edges through that indexing (every working edge has a face,
-// hence an input halfedge mapped to it).
+// The faces of the cut copy, added halfedge by halfedge into `wm` (which holds the
+// vertices `wv` only) as CGAL::Euler::add_face would add them face by face in the input's
+// face order: the same edges in the same order and directions, the same next halfedges,
+// the same halfedge of every face (the one into its first corner) and of every vertex
+// (the border halfedge into it if it has one, else the halfedge into it of its last face),
+// in time linear in the mesh instead of a search per face. Slot 3 f + i is the i-th
+// halfedge of working face f, from the copy of corner 3 f + i to that of the next
+// corner: input halfedge (i + 1) mod 3 of face f. Two slots are twins if they are
+// opposite input halfedges joining the same two copies (across every edge but a crease
+// between two different copies). Returns false, adding nothing, if a copy would not have
+// a single fan of faces (the caller then adds the faces with Euler::add_face).
+template <typename TriangleMesh>
+bool add_cut_faces(const Mesh_indexing<TriangleMesh>& idx, const Crease_sectors& sectors,
+                   const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& wv,
+                   TriangleMesh& wm, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& wf,
+                   bool parallel)
+{
+  typedef boost::graph_traits<TriangleMesh> GTr;
+  typedef typename GTr::halfedge_descriptor halfedge_descriptor;
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nf = idx.number_of_faces(), nw = wv.size(), none = std::size_t(-1);
+  const std::vector<std::size_t>& cw = sectors.corner_working;
+  const auto from = [&](std::size_t s) { return cw[s]; };
+  const auto to = [&](std::size_t s) { return cw[s - s % 3 + (s % 3 + 1) % 3]; };
+  const auto next_slot = [](std::size_t s) { return s - s % 3 + (s % 3 + 1) % 3; };
+  const auto previous_slot = [](std::size_t s) { return s - s % 3 + (s % 3 + 2) % 3; };
+  // the twins (each face on its own, by TBB's threads if `parallel`)
+  std::vector<std::size_t> twin(3 * nf, none);
+  for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
+    {
+      int k = 0;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+      {
+        const std::size_t s = 3 * f + std::size_t(k + 2) % 3;
+        const halfedge_descriptor o = opposite(h, tm);
+        if(!is_border(o, tm))
+        {
+          const std::size_t c = sectors.corner_of_halfedge[idx.halfedge_id(o)];
+          const std::size_t t = c - c % 3 + (c % 3 + 2) % 3;
+          if(from(s) == to(t) && to(s) == from(t)) twin[s] = t;
+        }
+        if(++k == 3) break;
+      }
+    }
+  });
+  for(std::size_t s = 0; s < 3 * nf; ++s)
+    if(twin[s] != none && twin[twin[s]] != s) return false;
+  // one fan per copy: turning around it from slot to slot across its edges visits every
+  // slot that leaves it (from a border, if it has one)
+  std::vector<std::size_t> begin(nw + 1, 0), out(3 * nf);
+  for(std::size_t s = 0; s < 3 * nf; ++s) ++begin[from(s) + 1];
+  for(std::size_t w = 0; w < nw; ++w) begin[w + 1] += begin[w];
+  {
+    std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+    for(std::size_t s = 0; s < 3 * nf; ++s) out[fill[from(s)]++] = s;
+  }
+  const std::size_t chunk = 16384;
+  std::vector<char> pinched((nw + chunk - 1) / chunk, 0);
+  for_each_range(pinched.size(), parallel, 1, [&](std::size_t first_chunk, std::size_t last_chunk) {
+    for(std::size_t ch = first_chunk; ch < last_chunk; ++ch)
+      for(std::size_t w = ch * chunk; w < (std::min)(nw, (ch + 1) * chunk) && !pinched[ch]; ++w)
+      {
+        const std::size_t first = begin[w], last = begin[w + 1];
+        if(last - first < 2) continue;
+        std::size_t start = out[first];
+        for(std::size_t k = first; k < last; ++k)
+          if(twin[previous_slot(out[k])] == none)
+          {
+            start = out[k];
+            break;
+          }
+        std::size_t visited = 1;
+        for(std::size_t s = start;;)
+        {
+          const std::size_t t = twin[s];
+          if(t == none) break;
+          s = next_slot(t);
+          if(s == start) break;
+          if(++visited > last - first) break;
+        }
+        if(visited != last - first) pinched[ch] = 1;
+      }
+  });
+  if(std::find(pinched.begin(), pinched.end(), 1) != pinched.end()) return false;
+  // the faces, their halfedges and edges
+  std::vector<halfedge_descriptor> halfedge_of(3 * nf, GTr::null_halfedge());
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto face = add_face(wm);
+    wf[f] = face;
+    for(std::size_t s = 3 * f; s < 3 * f + 3; ++s)
+    {
+      halfedge_descriptor h;
+      if(twin[s] != none && halfedge_of[twin[s]] != GTr::null_halfedge())
+        h = opposite(halfedge_of[twin[s]], wm);
+      else
+      {
+        h = halfedge(add_edge(wm), wm);
+        set_target(h, wv[to(s)], wm);
+        set_target(opposite(h, wm), wv[from(s)], wm);
+        set_face(opposite(h, wm), GTr::null_face(), wm);
+      }
+      halfedge_of[s] = h;
+      set_face(h, face, wm);
+    }
+    for(std::size_t s = 3 * f; s < 3 * f + 3; ++s)
+    {
+      set_next(halfedge_of[s], halfedge_of[next_slot(s)], wm);
+      set_halfedge(wv[to(s)], halfedge_of[s], wm);
+    }
+    set_halfedge(face, halfedge_of[3 * f + 2], wm);
+  }
+  // the border: the border halfedge opposite slot s (from(s) -> to(s)) runs into
+  // from(s), is its halfedge, and goes on with the border halfedge leaving from(s)
+  std::vector<halfedge_descriptor> border_from(nw, GTr::null_halfedge());
+  for(std::size_t s = 0; s < 3 * nf; ++s)
+    if(twin[s] == none) border_from[to(s)] = opposite(halfedge_of[s], wm);
+  for(std::size_t s = 0; s < 3 * nf; ++s)
+    if(twin[s] == none)
+    {
+      const halfedge_descriptor border = opposite(halfedge_of[s], wm);
+      set_next(border, border_from[from(s)], wm);
+      set_halfedge(wv[from(s)], border, wm);
+    }
+  return true;
+}
+
+// The cut copy, built in the input's face order (add_cut_faces; Euler::add_face face by
+// face if a copy would not have one fan), and its indexing; then the maps of halfedges
+// and edges through that indexing (every working edge has a face, hence an input
+// halfedge mapped to it).
 template <typename TriangleMesh, typename VPM>
 void build_cut_mesh(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const Crease_sectors& sectors,
-                    Crease_cut<TriangleMesh>& cut)
+                    Crease_cut<TriangleMesh>& cut, bool parallel = false)
 {
   typedef boost::graph_traits<TriangleMesh> GTr;
   typedef typename GTr::vertex_descriptor vertex_descriptor;
@@ -180,14 +310,15 @@ void build_cut_mesh(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const Creas
   }
   const std::vector<std::size_t>& corner_working = sectors.corner_working;
   std::vector<face_descriptor> wf(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    std::array<vertex_descriptor, 3> t = { wv[corner_working[3 * f]], wv[corner_working[3 * f + 1]],
-                                           wv[corner_working[3 * f + 2]] };
-    wf[f] = CGAL::Euler::add_face(t, wm);
-    if(wf[f] == GTr::null_face())
-      throw Invalid_input("the mesh cannot be cut along its creases (a non-manifold configuration)");
-  }
+  if(!add_cut_faces(idx, sectors, wv, wm, wf, parallel))
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      std::array<vertex_descriptor, 3> t = { wv[corner_working[3 * f]], wv[corner_working[3 * f + 1]],
+                                             wv[corner_working[3 * f + 2]] };
+      wf[f] = CGAL::Euler::add_face(t, wm);
+      if(wf[f] == GTr::null_face())
+        throw Invalid_input("the mesh cannot be cut along its creases (a non-manifold configuration)");
+    }
   CGAL_postcondition(CGAL::is_valid_polygon_mesh(wm));
 
   cut.working_idx = std::make_unique<const Mesh_indexing<TriangleMesh> >(wm);
@@ -291,7 +422,7 @@ void compute_crease_cut(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double 
   count_creases();
   if(cut.number_of_creases == 0) return;
   const Crease_sectors sectors = crease_sectors(idx, cut);
-  build_cut_mesh(idx, vpm, sectors, cut);
+  build_cut_mesh(idx, vpm, sectors, cut, parallel);
   add_crease_ties(idx, vpm, angle, crease_angle, gamma, sectors, cut);
   count_creases();
 }
