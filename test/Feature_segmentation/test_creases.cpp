@@ -32,6 +32,76 @@ BOOST_AUTO_TEST_CASE(plate_with_a_thin_slot_is_its_ten_faces)
   fs_test::slotted_plate_is_its_ten_faces<Poly>(1);
 }
 
+// The cut copy's faces, added halfedge by halfedge (add_cut_faces), are the mesh that
+// Euler::add_face makes face by face from the same sectors, element for element: the
+// same targets, next halfedges and faces of every halfedge, the same halfedge of every
+// vertex and face. On a closed box (every vertex on a crease) and on a sheet folded by
+// 45 degrees (a crease that ends on the border).
+template <typename Mesh>
+void cut_faces_are_eulers(const Mesh& m)
+{
+  namespace I = FS::internal;
+  const I::Mesh_indexing<Mesh> idx(m);
+  I::Crease_cut<Mesh> cut;
+  I::compute_crease_cut(idx, get(CGAL::vertex_point, m), 20., 40, true, 0.05, cut);
+  BOOST_REQUIRE(cut.is_cut());
+  I::Crease_cut<Mesh> again;
+  again.is_crease = cut.is_crease;
+  const I::Crease_sectors sectors = I::crease_sectors(idx, again);
+  BOOST_REQUIRE(again.input_vertex == cut.input_vertex);
+  Mesh euler;
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> v;
+  for(std::size_t i = 0; i < again.input_vertex.size(); ++i) v.push_back(add_vertex(euler));
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  {
+    const std::array<typename boost::graph_traits<Mesh>::vertex_descriptor, 3> t = {
+      v[sectors.corner_working[3 * f]], v[sectors.corner_working[3 * f + 1]], v[sectors.corner_working[3 * f + 2]] };
+    BOOST_REQUIRE(CGAL::Euler::add_face(t, euler) != boost::graph_traits<Mesh>::null_face());
+  }
+  const Mesh& direct = *cut.mesh;
+  const I::Mesh_indexing<Mesh> a(direct), b(euler);
+  BOOST_REQUIRE(a.number_of_vertices() == b.number_of_vertices());
+  BOOST_REQUIRE(a.number_of_edges() == b.number_of_edges());
+  BOOST_REQUIRE(a.number_of_faces() == b.number_of_faces());
+  std::size_t differences = 0;
+  auto face_id = [](const I::Mesh_indexing<Mesh>& x, auto h) { return x.face_id(h); };
+  auto hb = halfedges(euler).begin();
+  for(auto h : halfedges(direct))
+  {
+    const auto g = *hb++;
+    if(a.halfedge_id(h) != b.halfedge_id(g) || a.id(target(h, direct)) != b.id(target(g, euler)) ||
+       a.halfedge_id(next(h, direct)) != b.halfedge_id(next(g, euler)) || face_id(a, h) != face_id(b, g))
+      ++differences;
+  }
+  for(std::size_t i = 0; i < a.number_of_vertices(); ++i)
+  {
+    const auto h = halfedge(a.vertex_at(i), direct), g = halfedge(b.vertex_at(i), euler);
+    const bool isolated = h == boost::graph_traits<Mesh>::null_halfedge();
+    if(isolated != (g == boost::graph_traits<Mesh>::null_halfedge()) || (!isolated && a.halfedge_id(h) != b.halfedge_id(g)))
+      ++differences;
+  }
+  for(std::size_t f = 0; f < a.number_of_faces(); ++f)
+    if(a.halfedge_id(halfedge(a.face_at(f), direct)) != b.halfedge_id(halfedge(b.face_at(f), euler))) ++differences;
+  BOOST_TEST(differences == 0u);
+}
+
+fs_test::Soup folded_sheet()
+{
+  fs_test::Soup s = fs_test::plane(1., 12);
+  for(auto& p : s.points)
+    if(p[0] > 0.5) p[2] = p[0] - 0.5;
+  return s;
+}
+
+BOOST_AUTO_TEST_CASE(cut_faces_are_those_of_euler_add_face)
+{
+  std::vector<int> side;
+  cut_faces_are_eulers(fs_test::to_mesh<SM>(fs_test::noisy_box(0., 6, side)));
+  cut_faces_are_eulers(fs_test::to_mesh<Poly>(fs_test::noisy_box(0., 6, side)));
+  cut_faces_are_eulers(fs_test::to_mesh<SM>(folded_sheet()));
+  cut_faces_are_eulers(fs_test::to_mesh<Poly>(folded_sheet()));
+}
+
 BOOST_AUTO_TEST_CASE(crease_ties_follow_alpha_edits)
 {
   std::vector<int> side;
