@@ -68,7 +68,7 @@ void face_geometry(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, std::vector<
 // face's ring merges the sorted lists of its three vertices.
 template <typename TriangleMesh>
 void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<std::uint32_t>& begin,
-                           std::vector<std::uint32_t>& faces)
+                           std::vector<std::uint32_t>& faces, bool parallel = false)
 {
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces(), nv = idx.number_of_vertices();
@@ -76,17 +76,19 @@ void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<s
     throw std::length_error("the mesh has too many faces for the crease detection's 32-bit face rings");
   // the corners of every face, then the faces of every vertex (CSR)
   std::vector<std::uint32_t> corner(3 * nf, std::uint32_t(-1)), vertex_begin(nv + 1, 0);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+  for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
     {
-      const std::uint32_t v = std::uint32_t(idx.id(target(h, tm)));
-      corner[3 * f + k] = v;
-      ++vertex_begin[v + 1];
-      if(++k == 3) break;
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+      {
+        corner[3 * f + k] = std::uint32_t(idx.id(target(h, tm)));
+        if(++k == 3) break;
+      }
     }
-  }
+  });
+  for(std::uint32_t v : corner)
+    if(v != std::uint32_t(-1)) ++vertex_begin[v + 1];
   for(std::size_t v = 0; v < nv; ++v) vertex_begin[v + 1] += vertex_begin[v];
   std::vector<std::uint32_t> vertex_faces(vertex_begin[nv]);
   {
@@ -95,12 +97,9 @@ void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<s
       for(int k = 0; k < 3; ++k)
         if(corner[3 * f + k] != std::uint32_t(-1)) vertex_faces[fill[corner[3 * f + k]]++] = std::uint32_t(f);
   }
-  begin.assign(nf + 1, 0);
-  faces.clear();
-  faces.reserve(13 * nf + 1);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    // merge the three sorted lists, dropping repeats
+  // Each face's ring merges the sorted lists of its three vertices, dropping repeats:
+  // counted by face, then written at its offset (by TBB's threads if `parallel`).
+  const auto merge = [&](std::size_t f, std::uint32_t* out) {
     const std::uint32_t* at[3];
     const std::uint32_t* end[3];
     for(int k = 0; k < 3; ++k)
@@ -109,20 +108,37 @@ void vertex_adjacent_faces(const Mesh_indexing<TriangleMesh>& idx, std::vector<s
       at[k] = v == std::uint32_t(-1) ? nullptr : vertex_faces.data() + vertex_begin[v];
       end[k] = v == std::uint32_t(-1) ? nullptr : vertex_faces.data() + vertex_begin[v + 1];
     }
+    std::uint32_t count = 0;
     for(;;)
     {
       std::uint32_t least = std::uint32_t(-1);
       for(int k = 0; k < 3; ++k)
         if(at[k] != end[k] && *at[k] < least) least = *at[k];
       if(least == std::uint32_t(-1)) break;
-      faces.push_back(least);
+      if(out != nullptr) out[count] = least;
+      ++count;
       for(int k = 0; k < 3; ++k)
         if(at[k] != end[k] && *at[k] == least) ++at[k];
     }
-    if(faces.size() >= std::size_t(UINT32_MAX))
-      throw std::length_error("the mesh has too many faces for the crease detection's 32-bit face rings");
-    begin[f + 1] = std::uint32_t(faces.size());
-  }
+    return count;
+  };
+  std::vector<std::size_t> offset(nf + 1, 0);
+  for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f) offset[f + 1] = merge(f, nullptr);
+  });
+  for(std::size_t f = 0; f < nf; ++f) offset[f + 1] += offset[f];
+  if(offset[nf] >= std::size_t(UINT32_MAX))
+    throw std::length_error("the mesh has too many faces for the crease detection's 32-bit face rings");
+  faces.resize(offset[nf]);
+  begin.resize(nf + 1);
+  for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t f = first; f < last; ++f)
+    {
+      merge(f, faces.data() + offset[f]);
+      begin[f] = std::uint32_t(offset[f]);
+    }
+  });
+  begin[nf] = std::uint32_t(offset[nf]);
 }
 
 // The range parameter of the bilateral filter of the normals, on |n_f - n_g| (0.3: the
@@ -312,7 +328,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   std::vector<double> area;
   face_geometry(idx, vpm, normal, area, centroid, parallel);
   std::vector<std::uint32_t> begin, ring;
-  vertex_adjacent_faces(idx, begin, ring);
+  vertex_adjacent_faces(idx, begin, ring, parallel);
   const std::vector<double> raw = dihedral_angles(idx, normal, parallel);
   const double raw_roughness = normal_roughness(normal, begin, ring, parallel);
   clean = raw_roughness <= crease_filter_roughness;
