@@ -27,6 +27,10 @@
 
 #include <Eigen/Dense>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_sort.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -98,18 +102,28 @@ public:
     double jump = 0, k2 = 0;
   };
 
+  // `parallel`: the vertices keyed and sorted by TBB's threads (the pairs are distinct:
+  // the same order at any thread count).
   Window_grid(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normal,
-              const std::vector<double>& jump, const std::vector<double>& k2, const Eigen::Vector3d& lo, double cell)
+              const std::vector<double>& jump, const std::vector<double>& k2, const Eigen::Vector3d& lo, double cell,
+              bool parallel = false)
     : m_lo(lo), m_cell(cell)
   {
     std::vector<std::pair<std::uint64_t, std::size_t> > keyed(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i)
-    {
-      const Eigen::Vector3d g = (points[i] - m_lo) / m_cell;
-      keyed[i] = { key(std::int64_t(std::floor(g.x())), std::int64_t(std::floor(g.y())), std::int64_t(std::floor(g.z())),
-                       side(normal[i])), i };
-    }
-    std::sort(keyed.begin(), keyed.end());
+    for_each_range(points.size(), parallel, 8192, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i)
+      {
+        const Eigen::Vector3d g = (points[i] - m_lo) / m_cell;
+        keyed[i] = { key(std::int64_t(std::floor(g.x())), std::int64_t(std::floor(g.y())), std::int64_t(std::floor(g.z())),
+                         side(normal[i])), i };
+      }
+    });
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel)
+      tbb::parallel_sort(keyed.begin(), keyed.end());
+    else
+#endif
+      std::sort(keyed.begin(), keyed.end());
     for(const auto& k : keyed)
     {
       if(m_keys.empty() || m_keys.back() != k.first)
@@ -250,7 +264,7 @@ Feature_lines<TriangleMesh> detect_seam_lines(const Mesh_indexing<TriangleMesh>&
       const Eigen::Vector3d n = (points[v[1]] - points[v[0]]).cross(points[v[2]] - points[v[0]]);
       for(std::size_t x : v) normal[x] += n; // weighted by area
     }
-    const Window_grid grid(points, normal, jump, k2, lo, 0.5 * width);
+    const Window_grid grid(points, normal, jump, k2, lo, 0.5 * width, parallel);
     for_each_range(nv, parallel, 4096, [&](std::size_t first, std::size_t last) {
       for(std::size_t v = first; v < last; ++v)
       {
