@@ -107,10 +107,17 @@ public:
     else if(m_name == "klj")
     {
       labels.clear(); // from singletons
-      n = FS::Kernighan_lin_with_joins()(g, labels);
+      FS::Kernighan_lin_with_joins solver;
+      solver.set_parallel(true);
+      n = solver(g, labels);
     }
     else
-      n = FS::Default_correlation_clustering_solver()(g, labels);
+    {
+      // Kernighan-Lin's rounds on the run's threads: the same labels at any count
+      FS::Default_correlation_clustering_solver solver;
+      solver.second().set_parallel(true);
+      n = solver(g, labels);
+    }
     const std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
     *m_seconds = d.count();
     return n;

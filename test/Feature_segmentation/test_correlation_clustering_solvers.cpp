@@ -15,6 +15,10 @@
 
 #include <boost/test/unit_test.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -256,6 +260,45 @@ BOOST_AUTO_TEST_CASE(deterministic_and_normalized)
   const std::size_t k = FS::Kernighan_lin_with_joins()(g, start);
   BOOST_TEST(is_normalized(start, k));
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// Kernighan-Lin with its rounds' pairs on TBB's threads gives the labels of one thread,
+// at 1, 2 and 8 threads: on grids of 4,800 nodes (hundreds of pairs per round, enough
+// for the threads) with every bias, from GAEC's partition and from singletons.
+BOOST_AUTO_TEST_CASE(parallel_kernighan_lin_equals_the_serial_one)
+{
+  std::mt19937 rng(20261127u);
+  for(int instance = 0; instance < 5; ++instance)
+  {
+    const FS::Correlation_clustering_graph g = grid_graph(80, 60, 0.25 * instance - 0.5, rng);
+    for(bool from_gaec : {true, false})
+    {
+      Labels start;
+      if(from_gaec) FS::Greedy_additive_edge_contraction()(g, start);
+      FS::Kernighan_lin_with_joins serial;
+      Labels expected = start;
+      serial(g, expected);
+      FS::Kernighan_lin_with_joins parallel;
+      parallel.set_parallel(true);
+      for(int threads : {1, 2, 8})
+      {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        Labels labels = start;
+        parallel(g, labels);
+        BOOST_TEST((labels == expected), "instance " << instance << (from_gaec ? " from GAEC, " : " from singletons, ")
+                                                     << threads << " threads");
+      }
+      FS::Default_correlation_clustering_solver both;
+      both.second().set_parallel(true);
+      Labels labels;
+      both(g, labels);
+      Labels reference;
+      FS::Default_correlation_clustering_solver()(g, reference);
+      BOOST_TEST((labels == reference), "instance " << instance << ", the default solver");
+    }
+  }
+}
+#endif
 
 BOOST_AUTO_TEST_CASE(archetype_in_solver_sequence)
 {

@@ -179,8 +179,9 @@ public:
   ///   rings only} \cgalParamType{`double` in [0, 1]}
   ///   \cgalParamDefault{`default_neighborhood_radius` (0.01)} \cgalParamNEnd
   ///   \cgalParamNBegin{concurrency_tag} \cgalParamDescription{a tag indicating whether the
-  ///   curvature fits, the crease detection (the rounds of the normal filter, the gap test) and the
-  ///   terms of the edge weights run sequentially or on TBB's threads}
+  ///   curvature fits, the crease detection (the rounds of the normal filter, the gap test), the
+  ///   terms of the edge weights and the default solver's Kernighan-Lin rounds run sequentially
+  ///   or on TBB's threads (with the same results)}
   ///   \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
   ///   `CGAL::Parallel_if_available_tag`} \cgalParamDefault{`CGAL::Sequential_tag`} \cgalParamNEnd
   ///   \cgalParamNBegin{solver} \cgalParamDescription{the correlation clustering solver, stored by

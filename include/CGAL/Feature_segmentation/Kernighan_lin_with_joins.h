@@ -42,6 +42,11 @@ namespace Feature_segmentation {
   least one changed in the previous round. The solver stops after a round that improved
   the cut cost by at most `epsilon()`, or after `number_of_iterations()` rounds.
 
+  With `set_parallel(true)` and TBB, the pairs of a round are improved by TBB's threads:
+  two pairs without a common cluster do not see each other's moves, and each pair runs
+  after the earlier pairs that share a cluster with it, so that the result is that of
+  one thread, at any thread count.
+
   Every applied change decreases the cut cost, and the solver checks the final cost
   against the initial one, so the result is never worse than the initial partition.
   Without an initial partition it starts from singletons, which gives acceptable but
@@ -82,6 +87,11 @@ public:
   std::size_t moves_without_improvement() const { return m_moves_without_improvement; }
   /// sets the number of non-improving moves after which a move sequence stops.
   void set_moves_without_improvement(std::size_t n) { m_moves_without_improvement = n; }
+  /// returns whether the pairs of a round are improved by TBB's threads (default: no).
+  bool parallel() const { return m_parallel; }
+  /// sets whether the pairs of a round are improved by TBB's threads (the same result;
+  /// without TBB, one thread).
+  void set_parallel(bool parallel) { m_parallel = parallel; }
 
   /*!
     improves the partition `labels` of `g`.
@@ -109,7 +119,7 @@ public:
     internal::Simple_adjacency adj;
     internal::build_simple_adjacency(g, adj);
     internal::Kernighan_lin_with_joins_impl impl(m_number_of_iterations, m_epsilon,
-                                                 m_moves_without_improvement);
+                                                 m_moves_without_improvement, m_parallel);
     impl.run(adj, labels);
     return normalize_labels(labels);
   }
@@ -118,6 +128,7 @@ private:
   std::size_t m_number_of_iterations;
   double m_epsilon;
   std::size_t m_moves_without_improvement;
+  bool m_parallel = false;
 };
 
 } // namespace Feature_segmentation

@@ -105,7 +105,8 @@ public:
     internal::greedy_additive_edge_contraction(g, adj, labels);
     internal::Kernighan_lin_with_joins_impl klj(second().number_of_iterations(),
                                                 second().epsilon(),
-                                                second().moves_without_improvement());
+                                                second().moves_without_improvement(),
+                                                second().parallel());
     klj.run(adj, labels);
     return normalize_labels(labels);
   }

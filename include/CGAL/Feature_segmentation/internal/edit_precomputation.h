@@ -77,7 +77,11 @@ public:
     anisotropic = choose_parameter(get_parameter(np, internal_np::watershed_distance),
                                    Watershed_distance::ANISOTROPIC) == Watershed_distance::ANISOTROPIC;
     reduced = choose_parameter(get_parameter(np, internal_np::use_oversegmentation), true);
-    const auto s = choose_parameter(get_parameter(np, internal_np::solver), Default_correlation_clustering_solver());
+    // the default solver's Kernighan-Lin rounds on TBB's threads with the stages' (the
+    // same result)
+    Default_correlation_clustering_solver default_solver;
+    default_solver.second().set_parallel(parallel);
+    const auto s = choose_parameter(get_parameter(np, internal_np::solver), default_solver);
     solver = [s](const Correlation_clustering_graph& g, std::vector<std::size_t>& labels) { return s(g, labels); };
   }
   Edit_precomputation(const Edit_precomputation&) = delete;

@@ -4,6 +4,14 @@
 // as intrusive linked lists over node arrays, so that moves are O(1) and nothing is
 // allocated per cluster), the Kernighan-Lin move sequence between two clusters, and the
 // rounds that revisit only the clusters changed in the previous round.
+//
+// The pairs of a round may be improved by TBB's threads with the labels of one thread:
+// improving a pair {a, b} moves nodes between a and b only, and reads of any other node
+// only whether its cluster is a or b, which a pair of two other clusters never changes.
+// So two pairs without a common cluster commute, and running every pair after the
+// earlier pairs that share a cluster with it (a task graph: each pair waits for at most
+// two) gives the serial result. The labels are then read and written as relaxed atomics
+// (a node of another pair's clusters may be read while that pair moves it).
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CORRELATION_CLUSTERING_KERNIGHAN_LIN_WITH_JOINS_IMPL_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CORRELATION_CLUSTERING_KERNIGHAN_LIN_WITH_JOINS_IMPL_H
@@ -12,8 +20,15 @@
 #include <CGAL/Feature_segmentation/internal/correlation_clustering/Lazy_max_heap.h>
 #include <CGAL/Feature_segmentation/internal/correlation_clustering/Simple_adjacency.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for_each.h>
+#endif
+
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -24,10 +39,11 @@ namespace internal {
 class Kernighan_lin_with_joins_impl
 {
 public:
+  // `parallel`: the pairs of a round improved by TBB's threads (the same result).
   Kernighan_lin_with_joins_impl(std::size_t number_of_iterations, double epsilon,
-                                std::size_t moves_without_improvement)
+                                std::size_t moves_without_improvement, bool parallel = false)
     : m_number_of_iterations(number_of_iterations), m_epsilon(epsilon),
-      m_moves_without_improvement((std::max)(std::size_t(1), moves_without_improvement))
+      m_moves_without_improvement((std::max)(std::size_t(1), moves_without_improvement)), m_parallel(parallel)
   {}
 
   // `labels` holds a partition (any label values smaller than labels.size() + 1 after
@@ -51,7 +67,7 @@ public:
     m_gain.resize(n);
     m_stamp.assign(n, 0);
     m_sequence = 0;
-    m_heap.reset(n);
+    m_main.heap.reset(n);
 
     // Every cluster counts as changed before the first round.
     m_changed_next.assign(n, 1);
@@ -63,18 +79,9 @@ public:
       m_changed_next.assign(k, 0);
       collect_pairs();
 
-      double improvement = 0.;
-      for(const std::pair<Cc_index, Cc_index>& pair : m_pairs)
-      {
-        if(m_size[pair.first] == 0 || m_size[pair.second] == 0)
-          continue;
-        const double gain = improve_pair(pair.first, pair.second);
-        if(gain > 0.)
-        {
-          improvement += gain;
-          m_changed_next[pair.first] = m_changed_next[pair.second] = 1;
-        }
-      }
+      // pair i runs sequence m_sequence + 2 (i + 1)
+      double improvement = improve_pairs();
+      m_sequence += 2 * (m_pairs.size() + 1);
 
       // Splitting depends only on the members of one cluster, so it is retried only for
       // clusters whose members changed since the last attempt.
@@ -179,15 +186,115 @@ private:
     }
   }
 
+  // a move of a sequence: the node and the cluster it left
+  struct Move
+  {
+    Cc_index node;
+    Cc_index from;
+  };
+
+  // What a move sequence works with: one per thread.
+  struct Scratch
+  {
+    Lazy_max_heap heap;
+    std::vector<Cc_index> candidates, open;
+    std::vector<Move> moves; // the moves of the current sequence
+    double prefix_gain = 0.; // and the gain of their best prefix
+    std::size_t sequence = 0;
+    bool ready = false;      // heap sized
+  };
+
+  // The labels, as relaxed atomics where the pairs run on threads (file comment).
+#if defined(__GNUC__) || defined(__clang__)
+  Cc_index label(Cc_index x) const { return __atomic_load_n(&m_label[x], __ATOMIC_RELAXED); }
+  void set_label(Cc_index x, Cc_index l) { __atomic_store_n(&m_label[x], l, __ATOMIC_RELAXED); }
+  static constexpr bool can_run_pairs_in_parallel = true;
+#else
+  Cc_index label(Cc_index x) const { return m_label[x]; }
+  void set_label(Cc_index x, Cc_index l) { m_label[x] = l; }
+  static constexpr bool can_run_pairs_in_parallel = false;
+#endif
+
+  // Pair i of m_pairs with sequence number m_sequence + 2 (i + 1); its gain (or 0).
+  double improve_pair_at(std::size_t i, Scratch& sc)
+  {
+    const Cc_index a = m_pairs[i].first, b = m_pairs[i].second;
+    if(m_size[a] == 0 || m_size[b] == 0)
+      return 0.;
+    const double gain = improve_pair(a, b, sc, m_sequence + 2 * (i + 1));
+    if(gain > 0.)
+      m_changed_next[a] = m_changed_next[b] = 1;
+    return gain;
+  }
+
+  // Every pair of the round, in order or by TBB's threads in an order that gives the
+  // same labels (file comment); returns the sum of the gains, added in pair order.
+  double improve_pairs()
+  {
+    const std::size_t np = m_pairs.size();
+    std::vector<double> gain(np, 0.);
+#ifdef CGAL_LINKED_WITH_TBB
+    if(can_run_pairs_in_parallel && m_parallel && np >= 64)
+    {
+      // the next pair of each of a pair's two clusters, and the earlier pairs it waits for
+      const std::size_t none = std::size_t(-1);
+      std::vector<std::size_t> last(m_head.size(), none), next(2 * np, none);
+      std::unique_ptr<std::atomic<int>[]> waits(new std::atomic<int>[np]);
+      std::vector<std::size_t> ready;
+      for(std::size_t i = 0; i < np; ++i)
+      {
+        int w = 0;
+        for(const Cc_index c : { m_pairs[i].first, m_pairs[i].second })
+        {
+          const std::size_t j = last[c];
+          if(j != none)
+          {
+            next[2 * j + (m_pairs[j].first == c ? 0 : 1)] = i;
+            ++w;
+          }
+          last[c] = i;
+        }
+        waits[i].store(w, std::memory_order_relaxed);
+        if(w == 0) ready.push_back(i);
+      }
+      const std::size_t n = m_label.size();
+      tbb::enumerable_thread_specific<Scratch> scratch;
+      tbb::parallel_for_each(ready.begin(), ready.end(), [&](std::size_t i, tbb::feeder<std::size_t>& feeder) {
+        Scratch& sc = scratch.local();
+        if(!sc.ready)
+        {
+          sc.heap.reset(n);
+          sc.ready = true;
+        }
+        gain[i] = improve_pair_at(i, sc);
+        for(int side = 0; side < 2; ++side)
+        {
+          const std::size_t j = next[2 * i + side];
+          if(j != none && waits[j].fetch_sub(1, std::memory_order_acq_rel) == 1)
+            feeder.add(j);
+        }
+      });
+    }
+    else
+#endif
+      for(std::size_t i = 0; i < np; ++i)
+        gain[i] = improve_pair_at(i, m_main);
+    double improvement = 0.;
+    for(double g : gain)
+      if(g > 0.)
+        improvement += g;
+    return improvement;
+  }
+
   // Decrease of the cut cost if x moves from its cluster to the other one of {a, b}.
   double move_gain(Cc_index x, Cc_index a, Cc_index b) const
   {
-    const Cc_index from = m_label[x];
+    const Cc_index from = label(x);
     const Cc_index to = from == a ? b : a;
     double gain = 0.;
     for(std::size_t j = m_adj->begin(x); j < m_adj->end(x); ++j)
     {
-      const Cc_index l = m_label[m_adj->neighbors[j]];
+      const Cc_index l = label(m_adj->neighbors[j]);
       if(l == to)
         gain += m_adj->weights[j];
       else if(l == from)
@@ -198,37 +305,37 @@ private:
 
   // Best of: a Kernighan-Lin sequence of moves between a and b, and joining a and b.
   // Applies it if it improves by more than epsilon; returns the applied gain (or 0).
-  double improve_pair(Cc_index a, Cc_index b)
+  double improve_pair(Cc_index a, Cc_index b, Scratch& sc, std::size_t sequence)
   {
     const Cc_index small = m_size[a] <= m_size[b] ? a : b;
     const Cc_index large = small == a ? b : a;
-    begin_sequence();
+    begin_sequence(sc, sequence);
     double join_gain = 0.;
     for(Cc_index x = m_head[small]; x != none(); x = m_next[x])
       for(std::size_t j = m_adj->begin(x); j < m_adj->end(x); ++j)
       {
         const Cc_index y = m_adj->neighbors[j];
-        if(m_label[y] != large)
+        if(label(y) != large)
           continue;
         join_gain += m_adj->weights[j];
-        add_candidate(x);
-        add_candidate(y);
+        add_candidate(x, sc);
+        add_candidate(y, sc);
       }
-    if(m_candidates.empty())
+    if(sc.candidates.empty())
       return 0.;
 
-    const std::size_t kept = run_sequence(a, b);
-    const double sequence_gain = m_prefix_gain;
+    const std::size_t kept = run_sequence(a, b, sc);
+    const double sequence_gain = sc.prefix_gain;
     if(join_gain > sequence_gain && join_gain > m_epsilon)
     {
-      undo_moves(0);
+      undo_moves(0, sc);
       // Splice the list of the small cluster in front of the list of the large one.
       Cc_index last = m_head[small];
-      m_label[last] = large;
+      set_label(last, large);
       while(m_next[last] != none())
       {
         last = m_next[last];
-        m_label[last] = large;
+        set_label(last, large);
       }
       m_next[last] = m_head[large];
       m_previous[m_head[large]] = last;
@@ -240,10 +347,10 @@ private:
     }
     if(kept > 0 && sequence_gain > m_epsilon)
     {
-      commit_moves();
+      commit_moves(sc);
       return sequence_gain;
     }
-    undo_moves(0);
+    undo_moves(0, sc);
     return 0.;
   }
 
@@ -253,17 +360,18 @@ private:
     const Cc_index b = Cc_index(m_head.size());
     m_head.push_back(none());
     m_size.push_back(0);
-    begin_sequence();
+    m_sequence += 2;
+    begin_sequence(m_main, m_sequence);
     for(Cc_index x = m_head[a]; x != none(); x = m_next[x])
-      add_candidate(x);
+      add_candidate(x, m_main);
 
-    const std::size_t kept = run_sequence(a, b);
-    if(kept > 0 && m_prefix_gain > m_epsilon)
+    const std::size_t kept = run_sequence(a, b, m_main);
+    if(kept > 0 && m_main.prefix_gain > m_epsilon)
     {
-      commit_moves();
-      return m_prefix_gain;
+      commit_moves(m_main);
+      return m_main.prefix_gain;
     }
-    undo_moves(0);
+    undo_moves(0, m_main);
     m_head.pop_back();
     m_size.pop_back();
     return 0.;
@@ -271,21 +379,21 @@ private:
 
   // One stamp per node and sequence: 2s means "candidate in sequence s", 2s+1 means
   // "moved in sequence s". One array instead of two saves a cache miss per neighbour.
-  void begin_sequence()
+  void begin_sequence(Scratch& sc, std::size_t sequence) const
   {
-    m_sequence += 2;
-    m_candidates.clear();
+    sc.sequence = sequence;
+    sc.candidates.clear();
   }
 
-  bool is_candidate(Cc_index x) const { return m_stamp[x] >= m_sequence; }
-  bool is_locked(Cc_index x) const { return m_stamp[x] == m_sequence + 1; }
+  bool is_candidate(Cc_index x, const Scratch& sc) const { return m_stamp[x] >= sc.sequence; }
+  bool is_locked(Cc_index x, const Scratch& sc) const { return m_stamp[x] == sc.sequence + 1; }
 
-  void add_candidate(Cc_index x)
+  void add_candidate(Cc_index x, Scratch& sc)
   {
-    if(!is_candidate(x))
+    if(!is_candidate(x, sc))
     {
-      m_stamp[x] = m_sequence;
-      m_candidates.push_back(x);
+      m_stamp[x] = sc.sequence;
+      sc.candidates.push_back(x);
     }
   }
 
@@ -295,24 +403,24 @@ private:
   // its gain in m_prefix_gain. Only labels change here; member lists are updated by
   // commit_moves() once the caller decides to keep the moves, which makes rejected
   // sequences (the vast majority) cheap.
-  std::size_t run_sequence(Cc_index a, Cc_index b)
+  std::size_t run_sequence(Cc_index a, Cc_index b, Scratch& sc)
   {
-    m_moves.clear();
+    sc.moves.clear();
     // Most sequences involve a few dozen nodes; for them, a linear scan of the open
     // candidates finds the best move faster than a heap. Long sequences switch to the
     // heap for good as soon as the open candidates outgrow the threshold.
-    m_open.clear();
+    sc.open.clear();
     bool use_heap = false;
-    for(Cc_index x : m_candidates)
+    for(Cc_index x : sc.candidates)
     {
       m_gain[x] = move_gain(x, a, b);
-      m_open.push_back(x);
+      sc.open.push_back(x);
     }
-    if(m_open.size() > linear_scan_threshold())
-      switch_to_heap(use_heap);
+    if(sc.open.size() > linear_scan_threshold())
+      switch_to_heap(use_heap, sc);
 
     double total = 0.;
-    m_prefix_gain = 0.;
+    sc.prefix_gain = 0.;
     std::size_t best_length = 0;
     for(;;)
     {
@@ -320,54 +428,54 @@ private:
       if(use_heap)
       {
         Lazy_max_heap::Entry top;
-        if(!m_heap.pop(top))
+        if(!sc.heap.pop(top))
           break;
         x = top.item;
       }
       else
       {
-        if(m_open.empty())
+        if(sc.open.empty())
           break;
         std::size_t best = 0;
-        for(std::size_t i = 1; i < m_open.size(); ++i)
+        for(std::size_t i = 1; i < sc.open.size(); ++i)
         {
-          const double gi = m_gain[m_open[i]], gb = m_gain[m_open[best]];
-          if(gi > gb || (gi == gb && m_open[i] < m_open[best]))
+          const double gi = m_gain[sc.open[i]], gb = m_gain[sc.open[best]];
+          if(gi > gb || (gi == gb && sc.open[i] < sc.open[best]))
             best = i;
         }
-        x = m_open[best];
-        m_open[best] = m_open.back();
-        m_open.pop_back();
+        x = sc.open[best];
+        sc.open[best] = sc.open.back();
+        sc.open.pop_back();
       }
 
-      const Cc_index from = m_label[x];
+      const Cc_index from = label(x);
       const Cc_index to = from == a ? b : a;
       total += m_gain[x];
-      m_label[x] = to;
-      m_stamp[x] = m_sequence + 1;
-      m_moves.push_back(Move{x, from});
-      if(total > m_prefix_gain)
+      set_label(x, to);
+      m_stamp[x] = sc.sequence + 1;
+      sc.moves.push_back(Move{x, from});
+      if(total > sc.prefix_gain)
       {
-        m_prefix_gain = total;
-        best_length = m_moves.size();
+        sc.prefix_gain = total;
+        best_length = sc.moves.size();
       }
       // Without this bound, a large cluster would be swept entirely for each of its
       // neighbours, which is quadratic when one cluster covers most of the graph.
-      if(m_moves.size() - best_length >= m_moves_without_improvement)
+      if(sc.moves.size() - best_length >= m_moves_without_improvement)
         break;
 
       for(std::size_t j = m_adj->begin(x); j < m_adj->end(x); ++j)
       {
         const Cc_index y = m_adj->neighbors[j];
-        const Cc_index l = m_label[y];
-        if((l != a && l != b) || is_locked(y))
+        const Cc_index l = label(y);
+        if((l != a && l != b) || is_locked(y, sc))
           continue;
-        if(!is_candidate(y))
+        if(!is_candidate(y, sc))
         {
-          m_stamp[y] = m_sequence;
+          m_stamp[y] = sc.sequence;
           m_gain[y] = move_gain(y, a, b);
           if(!use_heap)
-            m_open.push_back(y);
+            sc.open.push_back(y);
         }
         else
         {
@@ -376,21 +484,21 @@ private:
           m_gain[y] += (l == from) ? w : -w;
         }
         if(use_heap)
-          m_heap.update(y, m_gain[y]);
+          sc.heap.update(y, m_gain[y]);
       }
-      if(!use_heap && m_open.size() > linear_scan_threshold())
-        switch_to_heap(use_heap);
+      if(!use_heap && sc.open.size() > linear_scan_threshold())
+        switch_to_heap(use_heap, sc);
     }
-    undo_moves(best_length);
+    undo_moves(best_length, sc);
     return best_length;
   }
 
-  void switch_to_heap(bool& use_heap)
+  void switch_to_heap(bool& use_heap, Scratch& sc)
   {
-    m_heap.clear();
-    for(Cc_index x : m_open)
-      m_heap.update(x, m_gain[x]);
-    m_open.clear();
+    sc.heap.clear();
+    for(Cc_index x : sc.open)
+      sc.heap.update(x, m_gain[x]);
+    sc.open.clear();
     use_heap = true;
   }
 
@@ -419,30 +527,23 @@ private:
     --m_size[cluster];
   }
 
-  void undo_moves(std::size_t length)
+  void undo_moves(std::size_t length, Scratch& sc)
   {
-    for(std::size_t i = length; i < m_moves.size(); ++i)
-      m_label[m_moves[i].node] = m_moves[i].from;
-    m_moves.resize(length);
+    for(std::size_t i = length; i < sc.moves.size(); ++i)
+      set_label(sc.moves[i].node, sc.moves[i].from);
+    sc.moves.resize(length);
   }
 
   // Brings the member lists up to date with the labels after the kept moves.
-  void commit_moves()
+  void commit_moves(Scratch& sc)
   {
-    for(const Move& move : m_moves)
+    for(const Move& move : sc.moves)
     {
       unlink(move.node, move.from);
-      push_front(move.node, m_label[move.node]);
+      push_front(move.node, label(move.node));
     }
-    m_moves.clear();
+    sc.moves.clear();
   }
-
-  // a move of a sequence: the node and the cluster it left
-  struct Move
-  {
-    Cc_index node;
-    Cc_index from;
-  };
 
   const Simple_adjacency* m_adj = nullptr;
   std::size_t m_number_of_iterations;
@@ -463,13 +564,11 @@ private:
 
   std::vector<double> m_gain;
   std::vector<std::size_t> m_stamp;
+  // the sequence numbers used so far (pairs and splits): a node's stamp below the
+  // current sequence's is from an earlier one
   std::size_t m_sequence = 0;
-  Lazy_max_heap m_heap;
-  std::vector<Cc_index> m_candidates;
-  std::vector<Cc_index> m_open;
-  // the moves of the current sequence, and their gain so far
-  double m_prefix_gain = 0.;
-  std::vector<Move> m_moves;
+  Scratch m_main; // of the calling thread
+  bool m_parallel = false;
 };
 
 } // namespace internal
