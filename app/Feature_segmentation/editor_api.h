@@ -227,7 +227,7 @@ private:
         largest = (std::max)(largest, ids[i]);
       }
     }
-    const unsigned width = largest < 0x100u ? 1 : largest < 0x10000u ? 2 : 4;
+    const unsigned width = internal::Little_endian_bytes::id_width(largest);
     internal::Little_endian_bytes out(16 + (4 + width) * end.size());
     out.u32(m_run->pipeline.segmentation->number_of_patches());
     out.u32(ids.size());
@@ -252,7 +252,7 @@ private:
       for(Mesh::Vertex_index v : m.vertices()) ids[i++] = std::uint32_t(seg.patch(v));
     }
     const std::uint32_t largest = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end());
-    const unsigned width = largest < 0x100u ? 1 : largest < 0x10000u ? 2 : 4;
+    const unsigned width = internal::Little_endian_bytes::id_width(largest);
     internal::Little_endian_bytes out(16 + width * ids.size());
     out.u32(seg.number_of_patches());
     out.u32(nt);

@@ -125,6 +125,8 @@ public:
     m_bytes.resize(at + std::size_t(width) * count);
     return &m_bytes[at];
   }
+  // The fewest bytes (1, 2 or 4) that hold every id up to `largest`.
+  static unsigned id_width(std::uint32_t largest) { return largest < 0x100u ? 1 : largest < 0x10000u ? 2 : 4; }
   static void write_id(char* at, std::uint32_t x, unsigned width)
   {
     for(unsigned k = 0; k < width; ++k) at[k] = char((x >> (8 * k)) & 0xff);
