@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The creases of a tessellation (edges whose two faces bend by at least an angle), found
 // on face normals that a bilateral filter has cleaned of noise when the tessellation is
-// rough, kept where the gap test says they are no strong bend of a smooth surface, and,
-// on a clean tessellation, the curvature discontinuities between flat regions; used by
+// rough, kept where the gap test says they are no strong bend of a smooth surface, and
+// the curvature discontinuities: between flat regions on a clean tessellation, at the
+// borders of planes on a noisy one; used by
 // crease_cut.h, which cuts the mesh open along them.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_DETECTION_H
@@ -13,6 +14,7 @@
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
+#include <CGAL/Feature_segmentation/internal/plane_borders.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -309,7 +311,9 @@ inline int noisy_filter_rounds(double raw_roughness, int max_rounds)
 // the normals neither makes creases in flat parts nor breaks real ones, and that pass
 // the gap test (keep_creases_with_gap), marked 1; on a clean tessellation (raw
 // roughness at most crease_filter_roughness) and if `tangent`, the curvature
-// discontinuities (mark_tangent_discontinuities), marked 2; a piece of one or two faces
+// discontinuities (mark_tangent_discontinuities), marked 2; on a noisy one (raw
+// roughness above Crease_gap::raw_roughness) and if `tangent`, the borders of its planes
+// on the filtered normals (mark_plane_borders), marked 2; a piece of one or two faces
 // (if not clean, of up to crease_noisy_piece_max_faces) that these would cut out keeps
 // its flattest edge (join_isolated_crease_faces). `angle` receives
 // the filtered angles, `clean` whether the tessellation is clean, `cad` whether its
@@ -339,16 +343,20 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   // median face is smooth leaves the faces tilted far from all their neighbours (which
   // the range Gaussian protects) as spurious creases.
   const double stop = raw_roughness <= Crease_gap::raw_roughness ? crease_filter_roughness : 0.;
-  angle = raw_roughness > crease_filter_roughness && filter_iterations > 0
-            ? dihedral_angles(idx, filter_face_normals(normal, raw_roughness, area, centroid, begin, ring,
-                                                       stop > 0 ? (std::min)(filter_iterations, crease_smooth_filter_iterations)
-                                                                : noisy_filter_rounds(raw_roughness, filter_iterations),
-                                                       crease_filter_sigma_r, stop, parallel), parallel)
-            : raw;
-  // the bounding box's diagonal, for the rules of clean and smooth tessellations
+  const bool filtered = raw_roughness > crease_filter_roughness && filter_iterations > 0;
+  std::vector<Eigen::Vector3d> filtered_normal;
+  if(filtered)
+    filtered_normal = filter_face_normals(normal, raw_roughness, area, centroid, begin, ring,
+                                 stop > 0 ? (std::min)(filter_iterations, crease_smooth_filter_iterations)
+                                          : noisy_filter_rounds(raw_roughness, filter_iterations),
+                                 crease_filter_sigma_r, stop, parallel);
+  angle = filtered ? dihedral_angles(idx, filtered_normal, parallel) : raw;
+  // the bounding box's diagonal, for the rules of all but noisy tessellations (and the
+  // planes of noisy ones)
   const bool smooth = raw_roughness <= Crease_gap::raw_roughness;
+  const bool noisy_planes = !smooth && tangent && filtered;
   double diagonal = 0.;
-  if(smooth)
+  if(smooth || noisy_planes)
   {
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
     for(auto v : vertices(idx.mesh()))
@@ -370,6 +378,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
                         clean ? Crease_gap::strong_angle : 360., planar);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
+  if(noisy_planes) mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease);
   if(clean) join_isolated_crease_faces(idx, angle, is_crease);
   else join_isolated_crease_faces(idx, angle, is_crease, crease_noisy_piece_max_faces, 180.);
   // a noisy mesh's crest lines weigh less whatever its creases (see above)

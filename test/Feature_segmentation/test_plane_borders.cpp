@@ -1,0 +1,198 @@
+// The borders of planes on noisy meshes (plane_borders.h, part of the crease detection
+// when tangent_discontinuities is on): a floor and a wall joined by a quarter-cylinder
+// fillet, tangent to each other, with noise along the normals, so that no edge is a
+// crease and the flat regions of a clean tessellation do not exist. The plane borders
+// lie on the two tangent lines (within the two fillet rows that the 6-degree growth
+// and the filter's blur may take into a plane) and give the three faces of the part; a
+// noisy open cylinder has no plane, so no border; a noisy square is one plane without
+// border.
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Feature_segmentation/segment_along_features.h>
+#include <CGAL/Feature_segmentation/internal/crease_detection.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "test_meshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace FS = CGAL::Feature_segmentation;
+
+// the suite's namespace holds its helpers (one unity build unit: its names come first)
+BOOST_AUTO_TEST_SUITE(plane_borders)
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Surface_mesh<Epick::Point_3> SM;
+
+const double pi = 3.14159265358979323846;
+const double fillet_radius = 0.3;
+const int floor_segments = 20, fillet_segments = 12, wall_segments = 20, rulings = 20;
+const int profile_points = floor_segments + fillet_segments + wall_segments + 1;
+
+// Profile point i in the (x, z) plane and its unit normal: the floor from x = -1 to 0 at
+// z = 0, the fillet around (0, r) in steps of 7.5 degrees, the wall x = r up to z = r + 1.
+void profile(int i, double& x, double& z, double& nx, double& nz)
+{
+  if(i <= floor_segments) { x = -1. + double(i) / floor_segments; z = 0.; nx = 0.; nz = 1.; return; }
+  if(i <= floor_segments + fillet_segments)
+  {
+    const double t = 0.5 * pi * double(i - floor_segments) / fillet_segments;
+    x = fillet_radius * std::sin(t);
+    z = fillet_radius * (1. - std::cos(t));
+    nx = -std::sin(t);
+    nz = std::cos(t);
+    return;
+  }
+  x = fillet_radius;
+  z = fillet_radius + double(i - floor_segments - fillet_segments) / wall_segments;
+  nx = -1.;
+  nz = 0.;
+}
+
+// Arc length along the profile from point i to the nearer tangent line.
+double to_tangent_line(double i)
+{
+  const double step = 0.5 * pi * fillet_radius / fillet_segments;
+  const double a = i - floor_segments, b = i - floor_segments - fillet_segments;
+  auto length = [&](double d, double outside) { return d < 0 ? -d * outside : d * step; };
+  return (std::min)(length(a, 1. / floor_segments), length(-b, 1. / wall_segments));
+}
+
+// Every vertex moved along the surface's normal by a deterministic pseudo-random amount,
+// uniform in [-amplitude, amplitude].
+void add_noise(fs_test::Soup& s, const std::vector<std::array<double, 3> >& normal, double amplitude)
+{
+  unsigned long long state = 20170601;
+  for(std::size_t v = 0; v < s.points.size(); ++v)
+  {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double u = double(state >> 11) / double(1ULL << 53);
+    for(int k = 0; k < 3; ++k) s.points[v][k] += amplitude * (2 * u - 1) * normal[v][k];
+  }
+}
+
+fs_test::Soup noisy_filleted_corner(double amplitude)
+{
+  fs_test::Soup s = fs_test::parametric_grid(profile_points - 1, rulings, false, false, [](double u, double v) {
+    double x, z, nx, nz;
+    profile(int(std::lround(u * (profile_points - 1))), x, z, nx, nz);
+    return std::array<double, 3>{ x, v, z };
+  });
+  std::vector<std::array<double, 3> > normal;
+  for(std::size_t v = 0; v < s.points.size(); ++v)
+  {
+    double x, z, nx, nz;
+    profile(int(v % profile_points), x, z, nx, nz);
+    normal.push_back({ nx, 0., nz });
+  }
+  add_noise(s, normal, amplitude);
+  return s;
+}
+
+// The crease detection's marks (1 creases, 2 curvature discontinuities) and whether the
+// mesh counts as noisy (raw roughness above the smooth models').
+std::vector<char> crease_marks(const SM& m, bool& noisy)
+{
+  namespace I = FS::internal;
+  const I::Mesh_indexing<SM> idx(m);
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area, angle;
+  I::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
+  std::vector<std::uint32_t> begin, ring;
+  I::vertex_adjacent_faces(idx, begin, ring);
+  noisy = I::normal_roughness(normal, begin, ring) > I::Crease_gap::raw_roughness;
+  bool clean = false, cad = false;
+  return I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, angle, clean, cad);
+}
+
+
+BOOST_AUTO_TEST_CASE(noisy_fillet_is_floor_fillet_and_wall)
+{
+  // noise of up to 0.008 (0.4% of the diagonal 1.92, 16% of an edge): raw normals
+  // tilted by up to 18 degrees, far above the fillet's 7.5-degree steps
+  const SM m = fs_test::to_mesh<SM>(noisy_filleted_corner(0.008));
+  bool noisy = false;
+  const std::vector<char> marks = crease_marks(m, noisy);
+  BOOST_REQUIRE(noisy);
+  std::size_t borders = 0;
+  std::set<int> lines;
+  for(auto e : edges(m))
+  {
+    const std::size_t e_id = e.idx();
+    BOOST_TEST(marks[e_id] != 1); // no edge bends by 20 degrees
+    if(marks[e_id] != 2) continue;
+    ++borders;
+    // the edge's place along the profile, from its vertices' profile indices
+    const double i = 0.5 * double(source(halfedge(e, m), m).idx() % profile_points +
+                                  target(halfedge(e, m), m).idx() % profile_points);
+    BOOST_TEST(to_tangent_line(i) <= 2.01 * 0.5 * pi * fillet_radius / fillet_segments);
+    lines.insert(i < floor_segments + 0.5 * fillet_segments ? 0 : 1);
+  }
+  BOOST_TEST(lines.size() == 2u);         // both tangent lines
+  BOOST_TEST(borders >= 2u * rulings);   // along their whole length
+
+  // the segmentation: three patches, each the faces of one part (the faces of the
+  // rows next to the tangent lines aside)
+  FS::Feature_aligned_segmentation<SM> seg(m);
+  BOOST_TEST(seg.number_of_patches() == 3u);
+  std::map<int, std::set<std::size_t> > patches_of_part;
+  for(auto f : faces(m))
+  {
+    double i = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) i += double(v.idx() % profile_points) / 3.;
+    if(to_tangent_line(i) < 3 * 0.5 * pi * fillet_radius / fillet_segments) continue;
+    const int part = i < floor_segments ? 0 : i < floor_segments + fillet_segments ? 1 : 2;
+    patches_of_part[part].insert(seg.patch(f));
+  }
+  BOOST_TEST(patches_of_part.size() == 3u);
+  std::set<std::size_t> all;
+  for(const auto& p : patches_of_part)
+  {
+    BOOST_TEST(p.second.size() == 1u);
+    all.insert(p.second.begin(), p.second.end());
+  }
+  BOOST_TEST(all.size() == 3u);
+
+  // without the curvature discontinuities, nothing separates the three
+  FS::Feature_aligned_segmentation<SM> without(m, FS::parameters::tangent_discontinuities(false));
+  BOOST_TEST(without.number_of_patches() < 3u);
+}
+
+BOOST_AUTO_TEST_CASE(noisy_cylinder_has_no_plane)
+{
+  // radius 1, 64 facets round (5.6 degrees a step), noise of up to 0.6% of the diagonal:
+  // regions grown on its filtered normals are strips whose normals turn steadily
+  fs_test::Soup s = fs_test::cylinder(1., 4., 64, 64);
+  std::vector<std::array<double, 3> > normal;
+  for(const auto& p : s.points)
+  {
+    const double r = std::hypot(p[0], p[1]);
+    normal.push_back({ p[0] / r, p[1] / r, 0. });
+  }
+  add_noise(s, normal, 0.027);
+  const SM m = fs_test::to_mesh<SM>(s);
+  bool noisy = false;
+  const std::vector<char> marks = crease_marks(m, noisy);
+  BOOST_REQUIRE(noisy);
+  BOOST_TEST(std::count(marks.begin(), marks.end(), char(2)) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(noisy_square_is_one_plane_without_border)
+{
+  fs_test::Soup s = fs_test::plane(1., 40);
+  add_noise(s, std::vector<std::array<double, 3> >(s.points.size(), std::array<double, 3>{ 0., 0., 1. }), 0.01);
+  const SM m = fs_test::to_mesh<SM>(s);
+  bool noisy = false;
+  const std::vector<char> marks = crease_marks(m, noisy);
+  BOOST_REQUIRE(noisy);
+  BOOST_TEST(std::count(marks.begin(), marks.end(), char(2)) == 0);
+  BOOST_TEST(std::count(marks.begin(), marks.end(), char(1)) == 0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
