@@ -130,7 +130,9 @@ public:
   ///   \cgalParamNBegin{tangent_discontinuities} \cgalParamDescription{whether, on a clean
   ///   tessellation of a CAD part, the curvature discontinuities (where a fillet meets a plane or a
   ///   wider curved face without a crease angle) join the creases, and seam lines (where two curved
-  ///   faces meet and the smaller principal curvature steps) join the crest lines} \cgalParamType{`bool`}
+  ///   faces meet and the smaller principal curvature steps) join the crest lines; on a noisy mesh,
+  ///   the borders of its planes (where a plane meets a fillet or a curved face) join the creases}
+  ///   \cgalParamType{`bool`}
   ///   \cgalParamDefault{`default_tangent_discontinuities` (`true`)} \cgalParamNEnd
   ///   \cgalParamNBegin{crest_lines_on_clean_tessellations} \cgalParamDescription{whether the crest
   ///   lines of a tessellation of a CAD part (a clean one, a noisy one, or one its creases cut

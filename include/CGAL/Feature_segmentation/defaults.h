@@ -38,7 +38,8 @@ constexpr int default_crease_filter_iterations = 40;
 /// The default of the named parameter `tangent_discontinuities`: on a clean tessellation
 /// of a CAD part, the curvature discontinuities (a fillet meeting a plane or a wider
 /// curved face without a crease) join the creases, and seam lines (two curved faces
-/// meeting where the smaller principal curvature steps) join the crest lines.
+/// meeting where the smaller principal curvature steps) join the crest lines; on a noisy
+/// mesh, the borders of its planes join the creases.
 constexpr bool default_tangent_discontinuities = true;
 
 /// \ingroup PkgFeatureSegmentationSegmentation
