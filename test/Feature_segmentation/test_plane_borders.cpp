@@ -5,18 +5,22 @@
 // lie on the two tangent lines (within the two fillet rows that the 6-degree growth
 // and the filter's blur may take into a plane) and give the three faces of the part; a
 // noisy open cylinder has no plane, so no border; a noisy square is one plane without
-// border.
+// border; a Polyhedron_3 gets the borders of a Surface_mesh.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/segment_along_features.h>
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include "test_meshes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -162,6 +166,36 @@ BOOST_AUTO_TEST_CASE(noisy_fillet_is_floor_fillet_and_wall)
   // without the curvature discontinuities, nothing separates the three
   FS::Feature_aligned_segmentation<SM> without(m, FS::parameters::tangent_discontinuities(false));
   BOOST_TEST(without.number_of_patches() < 3u);
+}
+
+// The marked edges as (smaller vertex id, larger vertex id, mark), vertex ids in the
+// soup's order.
+template <typename Mesh>
+std::set<std::array<std::size_t, 3> > marked_edges(const Mesh& m)
+{
+  namespace I = FS::internal;
+  const I::Mesh_indexing<Mesh> idx(m);
+  std::vector<double> angle;
+  bool clean = false, cad = false;
+  const std::vector<char> marks = I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, angle, clean, cad);
+  std::set<std::array<std::size_t, 3> > out;
+  for(std::size_t e = 0; e < marks.size(); ++e)
+  {
+    if(!marks[e]) continue;
+    const auto h = halfedge(idx.edge_at(e), m);
+    const std::size_t a = idx.id(source(h, m)), b = idx.id(target(h, m));
+    out.insert({ (std::min)(a, b), (std::max)(a, b), std::size_t(marks[e]) });
+  }
+  return out;
+}
+
+BOOST_AUTO_TEST_CASE(polyhedron_gets_the_same_borders)
+{
+  typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > Poly;
+  const fs_test::Soup s = noisy_filleted_corner(0.008);
+  const auto on_surface_mesh = marked_edges(fs_test::to_mesh<SM>(s));
+  BOOST_TEST(on_surface_mesh.size() >= 2u * rulings);
+  BOOST_TEST((on_surface_mesh == marked_edges(fs_test::to_mesh<Poly>(s))));
 }
 
 BOOST_AUTO_TEST_CASE(noisy_cylinder_has_no_plane)
