@@ -191,6 +191,13 @@ BOOST_AUTO_TEST_CASE(searches_end_once_their_verdict_is_sure)
     const auto full =
       FS::internal::crease_gap_lengths(in.idx, in.geometry, in.angle, in.angle, 20., in.candidates, false);
     const auto bound = FS::internal::crease_gap_length_bounds(in.geometry, in.angle, in.angle, 20., in.candidates);
+    // by TBB's threads: the same sums, bit for bit
+    const auto threaded =
+      FS::internal::crease_gap_length_bounds(in.geometry, in.angle, in.angle, 20., in.candidates, true, true);
+    std::size_t same = 0;
+    for(std::size_t i = 0; i < bound.size(); ++i)
+      same += threaded[i].crease == bound[i].crease && threaded[i].band == bound[i].band;
+    BOOST_TEST(same == bound.size());
     std::size_t below_bound = 0, early = 0;
     for(std::size_t i = 0; i < in.candidates.size(); ++i)
     {

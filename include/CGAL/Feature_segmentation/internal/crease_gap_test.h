@@ -70,11 +70,12 @@ std::vector<Gap_lengths> crease_gap_lengths(const Mesh_indexing<TriangleMesh>& i
 
 // Per candidate, at least the lengths its search can find: those of every crease and band
 // edge within its ball, reached from the candidate or not (an AABB tree of these edges;
-// the same clipped lengths as the search's).
+// the same clipped lengths as the search's). The candidates by TBB's threads if
+// `parallel`, each summed in the tree's order: the same at any count.
 inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g, const std::vector<double>& angle,
                                                          const std::vector<double>& band_angle, double crease_angle,
                                                          const std::vector<std::size_t>& candidates,
-                                                         bool by_direction = true)
+                                                         bool by_direction = true, bool parallel = false)
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef std::vector<K::Segment_3>::const_iterator Iterator;
@@ -93,24 +94,40 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
     }
   const double r = crease_gap_ball_radius(points, g.ends);
   Tree tree(segments.begin(), segments.end());
-  std::vector<Tree::Primitive_id> hits;
-  for(std::size_t i = 0; i < candidates.size(); ++i)
-  {
-    const std::size_t c = candidates[i];
-    const Eigen::Vector3d m = 0.5 * (points[g.ends[c][0]] + points[g.ends[c][1]]);
-    Eigen::Vector3d t = points[g.ends[c][1]] - points[g.ends[c][0]];
-    if(t.squaredNorm() > 0) t.normalize();
-    hits.clear();
-    tree.all_intersected_primitives(K::Iso_cuboid_3(m.x() - 1.01 * r, m.y() - 1.01 * r, m.z() - 1.01 * r,
-                                                    m.x() + 1.01 * r, m.y() + 1.01 * r, m.z() + 1.01 * r),
-                                    std::back_inserter(hits));
-    for(const Tree::Primitive_id& id : hits)
+  auto bound_range = [&](std::size_t first, std::size_t last, std::vector<Tree::Primitive_id>& hits) {
+    for(std::size_t i = first; i < last; ++i)
     {
-      const std::size_t e = edge[std::size_t(id - segments.begin())];
-      const double in = length_in_ball(points[g.ends[e][0]], points[g.ends[e][1]], m, r);
-      if(angle[e] >= crease_angle) bound[i].crease += in;
-      else bound[i].band += by_direction ? in * band_weight(points[g.ends[e][1]] - points[g.ends[e][0]], t) : in;
+      const std::size_t c = candidates[i];
+      const Eigen::Vector3d m = 0.5 * (points[g.ends[c][0]] + points[g.ends[c][1]]);
+      Eigen::Vector3d t = points[g.ends[c][1]] - points[g.ends[c][0]];
+      if(t.squaredNorm() > 0) t.normalize();
+      hits.clear();
+      tree.all_intersected_primitives(K::Iso_cuboid_3(m.x() - 1.01 * r, m.y() - 1.01 * r, m.z() - 1.01 * r,
+                                                      m.x() + 1.01 * r, m.y() + 1.01 * r, m.z() + 1.01 * r),
+                                      std::back_inserter(hits));
+      for(const Tree::Primitive_id& id : hits)
+      {
+        const std::size_t e = edge[std::size_t(id - segments.begin())];
+        const double in = length_in_ball(points[g.ends[e][0]], points[g.ends[e][1]], m, r);
+        if(angle[e] >= crease_angle) bound[i].crease += in;
+        else bound[i].band += by_direction ? in * band_weight(points[g.ends[e][1]] - points[g.ends[e][0]], t) : in;
+      }
     }
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel)
+  {
+    tree.build(); // before the threads: the tree builds itself on the first query otherwise
+    tbb::enumerable_thread_specific<std::vector<Tree::Primitive_id> > hits;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& b) { bound_range(b.begin(), b.end(), hits.local()); });
+  }
+  else
+#endif
+  {
+    (void)parallel;
+    std::vector<Tree::Primitive_id> hits;
+    bound_range(0, candidates.size(), hits);
   }
   return bound;
 }
@@ -181,7 +198,7 @@ void keep_creases_with_gap(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, cons
   // below the share of the crease it found (the sums only grow; a relative margin of 1e-9
   // covers the order of the additions); the verdict is that of the whole search.
   const std::vector<Gap_lengths> bound =
-    crease_gap_length_bounds(geometry, angle, band_angle, crease_angle, searched, by_direction);
+    crease_gap_length_bounds(geometry, angle, band_angle, crease_angle, searched, by_direction, parallel);
   const double ratio = Crease_gap::ratio, margin = 1 + 1e-9;
   const std::vector<Gap_lengths> lengths =
     crease_gap_lengths(idx, std::move(geometry), angle, band_angle, crease_angle, searched, parallel,
