@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
@@ -73,15 +74,17 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
 {
   typedef Plane_thresholds Limits;
   const TriangleMesh& tm = idx.mesh();
+  // 32-bit face and edge ids (detect_creases() has checked that 3 ids per face fit)
+  typedef std::uint32_t Id;
   const std::size_t nf = idx.number_of_faces();
-  const std::size_t none = std::size_t(-1);
+  const Id none = Id(-1);
   const double to_degrees = 180. / 3.14159265358979323846;
   const double cos_angle = std::cos(Limits::angle / to_degrees);
   const double least_area = CGAL::square(Tangent_thresholds::least_flat_side * diagonal);
   auto valid = [&](std::size_t f) { return normal[f].squaredNorm() > 0; };
 
   // the faces across each face's three edges (none across a border or a crease)
-  std::vector<std::size_t> across(3 * nf, none), across_edge(3 * nf, none);
+  std::vector<Id> across(3 * nf, none), across_edge(3 * nf, none);
   for(std::size_t f = 0; f < nf; ++f)
   {
     int k = 0;
@@ -89,8 +92,8 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
     {
       if(k == 3) break;
       const std::size_t e = idx.edge_id(h), g = idx.face_id(opposite(h, tm));
-      across_edge[3 * f + k] = e;
-      if(g != idx.npos && !is_crease[e]) across[3 * f + k] = g;
+      across_edge[3 * f + k] = Id(e);
+      if(g != idx.npos && !is_crease[e]) across[3 * f + k] = Id(g);
       ++k;
     }
   }
@@ -102,31 +105,31 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
     double most = 0.;
     for(int k = 0; k < 3; ++k)
     {
-      const std::size_t g = across[3 * f + k];
+      const Id g = across[3 * f + k];
       if(g != none && valid(g)) most = (std::max)(most, 1. - normal[f].dot(normal[g]));
     }
     bend[f] = most;
   }
-  std::vector<std::size_t> order(nf);
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bend[a] < bend[b]; });
+  std::vector<Id> order(nf);
+  std::iota(order.begin(), order.end(), Id(0));
+  std::stable_sort(order.begin(), order.end(), [&](Id a, Id b) { return bend[a] < bend[b]; });
 
-  std::vector<std::size_t> region(nf, none), members;
+  std::vector<Id> region(nf, none), members;
   std::vector<char> is_plane;
   std::vector<Eigen::Vector3d> region_normal;
   std::vector<double> deviation;
-  for(std::size_t seed : order)
+  for(Id seed : order)
   {
     if(bend[seed] > 1. - cos_angle) break; // no flatter seed is left
     if(region[seed] != none) continue;
-    const std::size_t r = is_plane.size();
+    const Id r = Id(is_plane.size());
     members.assign(1, seed);
     region[seed] = r;
     Eigen::Vector3d sum = area[seed] * normal[seed];
     for(std::size_t i = 0; i < members.size(); ++i)
       for(int k = 0; k < 3; ++k)
       {
-        const std::size_t g = across[3 * members[i] + k];
+        const Id g = across[3 * members[i] + k];
         if(g == none || region[g] != none || !valid(g) || normal[g].dot(sum.normalized()) < cos_angle) continue;
         region[g] = r;
         sum += area[g] * normal[g];
@@ -136,7 +139,7 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
     double total = 0.;
     std::size_t inner = 0;
     Eigen::Vector3d c_mean = Eigen::Vector3d::Zero(), n_mean = Eigen::Vector3d::Zero();
-    for(std::size_t f : members)
+    for(Id f : members)
     {
       total += area[f];
       c_mean += area[f] * centroid[f];
@@ -154,13 +157,13 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
       n_mean /= total;
       // the median deviation from the mean normal
       deviation.clear();
-      for(std::size_t f : members)
+      for(Id f : members)
         deviation.push_back(std::acos((std::min)(1., normal[f].dot(region_normal[r]))) * to_degrees);
       std::nth_element(deviation.begin(), deviation.begin() + std::ptrdiff_t(deviation.size() / 2), deviation.end());
       // the trend: the least-squares gradient G of the normal over the centroids,
       // n ~ n_mean + G (c - c_mean), and the root mean square of G (c - c_mean)
       Eigen::Matrix3d cc = Eigen::Matrix3d::Zero(), nc = Eigen::Matrix3d::Zero();
-      for(std::size_t f : members)
+      for(Id f : members)
       {
         const Eigen::Vector3d dc = centroid[f] - c_mean;
         cc += area[f] * dc * dc.transpose();
@@ -168,22 +171,22 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
       }
       const Eigen::Matrix3d gradient = nc * cc.completeOrthogonalDecomposition().pseudoInverse();
       double trend = 0.;
-      for(std::size_t f : members) trend += area[f] * (gradient * (centroid[f] - c_mean)).squaredNorm();
+      for(Id f : members) trend += area[f] * (gradient * (centroid[f] - c_mean)).squaredNorm();
       trend = std::sqrt(trend / total) * to_degrees;
       plane = deviation[deviation.size() / 2] <= Limits::median * Limits::angle && trend <= Limits::trend * Limits::angle;
     }
     is_plane.push_back(plane ? 1 : 0);
   }
-  auto in_plane = [&](std::size_t f) { return region[f] != none && is_plane[region[f]]; };
+  auto in_plane = [&](Id f) { return region[f] != none && is_plane[region[f]]; };
 
   // the planes grow again over the faces of the other regions
   members.clear();
-  for(std::size_t f = 0; f < nf; ++f)
+  for(Id f = 0; f < nf; ++f)
     if(in_plane(f)) members.push_back(f);
   for(std::size_t i = 0; i < members.size(); ++i)
     for(int k = 0; k < 3; ++k)
     {
-      const std::size_t f = members[i], g = across[3 * f + k];
+      const Id f = members[i], g = across[3 * f + k];
       if(g == none || in_plane(g) || !valid(g) || normal[g].dot(region_normal[region[f]]) < cos_angle) continue;
       region[g] = region[f];
       members.push_back(g);
@@ -192,20 +195,20 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
   // pieces of other faces smaller than a plane that touch a single plane join it
   {
     std::vector<char> seen(nf, 0);
-    for(std::size_t f0 = 0; f0 < nf; ++f0)
+    for(Id f0 = 0; f0 < nf; ++f0)
     {
       if(seen[f0] || in_plane(f0)) continue;
       members.assign(1, f0);
       seen[f0] = 1;
       double total = 0.;
-      std::size_t plane = none;
+      Id plane = none;
       bool single = true;
       for(std::size_t i = 0; i < members.size(); ++i)
       {
         total += area[members[i]];
         for(int k = 0; k < 3; ++k)
         {
-          const std::size_t g = across[3 * members[i] + k];
+          const Id g = across[3 * members[i] + k];
           if(g == none) continue;
           if(in_plane(g))
           {
@@ -216,35 +219,35 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
         }
       }
       if(single && plane != none && total < least_area)
-        for(std::size_t f : members) region[f] = plane;
+        for(Id f : members) region[f] = plane;
     }
   }
 
   // the faces within Limits::crease_rows steps of a crease
-  std::vector<int> near(nf, Limits::crease_rows + 1);
+  std::vector<unsigned char> near(nf, (unsigned char)(Limits::crease_rows + 1));
   {
-    std::vector<std::size_t> front, next;
-    for(std::size_t f = 0; f < nf; ++f)
+    std::vector<Id> front, next;
+    for(Id f = 0; f < nf; ++f)
       for(int k = 0; k < 3; ++k)
         if(is_crease[across_edge[3 * f + k]] == 1 && near[f] != 0) { near[f] = 0; front.push_back(f); }
     for(int d = 1; d <= Limits::crease_rows && !front.empty(); ++d)
     {
       next.clear();
-      for(std::size_t f : front)
+      for(Id f : front)
         for(int k = 0; k < 3; ++k)
         {
-          const std::size_t g = across[3 * f + k];
-          if(g != none && near[g] > d) { near[g] = d; next.push_back(g); }
+          const Id g = across[3 * f + k];
+          if(g != none && near[g] > d) { near[g] = (unsigned char)d; next.push_back(g); }
         }
       front.swap(next);
     }
   }
-  for(std::size_t f = 0; f < nf; ++f)
+  for(Id f = 0; f < nf; ++f)
   {
     if(!in_plane(f) || near[f] <= Limits::crease_rows) continue;
     for(int k = 0; k < 3; ++k)
     {
-      const std::size_t g = across[3 * f + k];
+      const Id g = across[3 * f + k];
       if(g != none && region[g] != region[f] && near[g] > Limits::crease_rows) is_crease[across_edge[3 * f + k]] = 2;
     }
   }
