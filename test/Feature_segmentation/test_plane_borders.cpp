@@ -99,22 +99,27 @@ fs_test::Soup noisy_filleted_corner(double amplitude)
   return s;
 }
 
-// The crease detection's marks (1 creases, 2 curvature discontinuities) and whether the
-// mesh counts as noisy (raw roughness above the smooth models').
-std::vector<char> crease_marks(const SM& m, bool& noisy)
+// The crease detection's marks (1 creases, 2 curvature discontinuities) by the edge ids
+// of `idx`, and whether the mesh counts as noisy (raw roughness above the smooth models').
+template <typename Mesh>
+std::vector<char> crease_marks(const FS::internal::Mesh_indexing<Mesh>& idx, bool& noisy)
 {
   namespace I = FS::internal;
-  const I::Mesh_indexing<SM> idx(m);
+  const auto vpm = get(CGAL::vertex_point, idx.mesh());
   std::vector<Eigen::Vector3d> normal, centroid;
   std::vector<double> area, angle;
-  I::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
+  I::face_geometry(idx, vpm, normal, area, centroid);
   std::vector<std::uint32_t> begin, ring;
   I::vertex_adjacent_faces(idx, begin, ring);
   noisy = I::normal_roughness(normal, begin, ring) > I::Crease_gap::raw_roughness;
   bool clean = false, cad = false;
-  return I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, angle, clean, cad);
+  return I::detect_creases(idx, vpm, 20., 40, true, angle, clean, cad);
 }
 
+std::vector<char> crease_marks(const SM& m, bool& noisy)
+{
+  return crease_marks(FS::internal::Mesh_indexing<SM>(m), noisy);
+}
 
 BOOST_AUTO_TEST_CASE(noisy_fillet_is_floor_fillet_and_wall)
 {
@@ -173,11 +178,9 @@ BOOST_AUTO_TEST_CASE(noisy_fillet_is_floor_fillet_and_wall)
 template <typename Mesh>
 std::set<std::array<std::size_t, 3> > marked_edges(const Mesh& m)
 {
-  namespace I = FS::internal;
-  const I::Mesh_indexing<Mesh> idx(m);
-  std::vector<double> angle;
-  bool clean = false, cad = false;
-  const std::vector<char> marks = I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, angle, clean, cad);
+  const FS::internal::Mesh_indexing<Mesh> idx(m);
+  bool noisy = false;
+  const std::vector<char> marks = crease_marks(idx, noisy);
   std::set<std::array<std::size_t, 3> > out;
   for(std::size_t e = 0; e < marks.size(); ++e)
   {

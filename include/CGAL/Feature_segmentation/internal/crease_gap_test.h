@@ -6,6 +6,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_GAP_TEST_H
 
 #include <CGAL/Feature_segmentation/internal/crease_gap_search.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -94,7 +95,9 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
     }
   const double r = crease_gap_ball_radius(points, g.ends);
   Tree tree(segments.begin(), segments.end());
-  auto bound_range = [&](std::size_t first, std::size_t last, std::vector<Tree::Primitive_id>& hits) {
+  tree.build(); // before any thread: the tree builds itself on its first query otherwise
+  for_each_range(candidates.size(), parallel, 64, [&](std::size_t first, std::size_t last) {
+    std::vector<Tree::Primitive_id> hits;
     for(std::size_t i = first; i < last; ++i)
     {
       const std::size_t c = candidates[i];
@@ -113,22 +116,7 @@ inline std::vector<Gap_lengths> crease_gap_length_bounds(const Edge_geometry& g,
         else bound[i].band += by_direction ? in * band_weight(points[g.ends[e][1]] - points[g.ends[e][0]], t) : in;
       }
     }
-  };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(parallel)
-  {
-    tree.build(); // before the threads: the tree builds itself on the first query otherwise
-    tbb::enumerable_thread_specific<std::vector<Tree::Primitive_id> > hits;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
-                      [&](const tbb::blocked_range<std::size_t>& b) { bound_range(b.begin(), b.end(), hits.local()); });
-  }
-  else
-#endif
-  {
-    (void)parallel;
-    std::vector<Tree::Primitive_id> hits;
-    bound_range(0, candidates.size(), hits);
-  }
+  });
   return bound;
 }
 
