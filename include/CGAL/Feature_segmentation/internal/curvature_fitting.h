@@ -184,12 +184,21 @@ public:
     m_curv.assign(nv, Vertex_curvature());
     build_adjacency();
     m_clusters = Vertex_clusters();
+    m_sites.clear();
     if(radius > 0 && m_geom.mean_edge_length > 0)
     {
       const double across = radius / m_geom.mean_edge_length;
       const double size = vertices_per_squared_radius * across * across / cluster_budget;
       if(size >= double(min_cluster_size))
+      {
         m_clusters.build(m_adj_begin, m_adj, static_cast<std::size_t>(size));
+        m_sites.resize(m_clusters.size());
+        for(std::size_t c = 0; c < m_sites.size(); ++c)
+        {
+          const std::size_t w = m_clusters.representative[c];
+          m_sites[c] = Cluster_site{ m_geom.points[w], m_geom.vertex_normals[w], std::uint32_t(w) };
+        }
+      }
     }
     auto fit_range = [&](std::size_t first, std::size_t last, Work_space& ws) {
       if(ws.stamp.size() != nv) ws.stamp.assign(nv, std::uint32_t(-1));
@@ -341,9 +350,10 @@ private:
         const std::size_t d = m_clusters.neighbours[k];
         if(ws.cluster_stamp[d] == mark) continue;
         ws.cluster_stamp[d] = mark;
-        const std::size_t w = m_clusters.representative[d];
-        if((m_geom.points[w] - p0).squaredNorm() > radius2 || m_geom.vertex_normals[w].dot(n0) < cone_cosine) continue;
+        const Cluster_site& site = m_sites[d];
+        if((site.point - p0).squaredNorm() > radius2 || site.normal.dot(n0) < cone_cosine) continue;
         queue.push_back(d);
+        const std::size_t w = site.vertex;
         if(ws.stamp[w] != mark) { ws.stamp[w] = mark; out.push_back(w); }
       }
   }
@@ -464,6 +474,10 @@ private:
   std::vector<std::size_t> m_adj_begin;
   std::vector<std::uint32_t> m_adj; // 32-bit vertex ids (estimate() checks the count)
   Vertex_clusters m_clusters; // empty unless the radius spans many rings
+  // each cluster's representative vertex with its point and normal side by side: the
+  // search beyond the rings tests one of these per cluster it reaches
+  struct Cluster_site { Vec3 point, normal; std::uint32_t vertex; };
+  std::vector<Cluster_site> m_sites;
 };
 
 } // namespace internal

@@ -42,21 +42,33 @@ struct Vertex_clusters
       representative.resize(grown.size());
       for(std::size_t c = 0; c < grown.size(); ++c) representative[c] = grown.seed(c);
     }
-    // the graph: the distinct clusters across the vertices' edges, in increasing order
+    // the graph: the distinct clusters across the vertices' edges, in increasing order;
+    // counted, filled, then each cluster's run sorted and compacted in place
     const std::size_t nc = representative.size();
-    std::vector<std::vector<std::uint32_t> > around(nc);
+    std::vector<std::size_t> begin(nc + 1, 0);
     for(std::size_t v = 0; v < nv; ++v)
       for(std::size_t k = adj_begin[v]; k < adj_begin[v + 1]; ++k)
-        if(cluster_of[adj[k]] != cluster_of[v]) around[cluster_of[v]].push_back(cluster_of[adj[k]]);
+        if(cluster_of[adj[k]] != cluster_of[v]) ++begin[cluster_of[v] + 1];
+    for(std::size_t c = 0; c < nc; ++c) begin[c + 1] += begin[c];
+    neighbours.resize(begin[nc]);
+    {
+      std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+      for(std::size_t v = 0; v < nv; ++v)
+        for(std::size_t k = adj_begin[v]; k < adj_begin[v + 1]; ++k)
+          if(cluster_of[adj[k]] != cluster_of[v]) neighbours[fill[cluster_of[v]]++] = cluster_of[adj[k]];
+    }
     neighbour_begin.assign(nc + 1, 0);
-    neighbours.clear();
+    std::size_t out = 0;
     for(std::size_t c = 0; c < nc; ++c)
     {
-      std::sort(around[c].begin(), around[c].end());
-      around[c].erase(std::unique(around[c].begin(), around[c].end()), around[c].end());
-      neighbours.insert(neighbours.end(), around[c].begin(), around[c].end());
-      neighbour_begin[c + 1] = neighbours.size();
+      auto first = neighbours.begin() + std::ptrdiff_t(begin[c]), last = neighbours.begin() + std::ptrdiff_t(begin[c + 1]);
+      std::sort(first, last);
+      last = std::unique(first, last);
+      out = std::size_t(std::copy(first, last, neighbours.begin() + std::ptrdiff_t(out)) - neighbours.begin());
+      neighbour_begin[c + 1] = out;
     }
+    neighbours.resize(out);
+    neighbours.shrink_to_fit();
   }
 };
 
