@@ -220,7 +220,8 @@ BOOST_AUTO_TEST_CASE(rejects_bad_rings)
 
 #ifdef CGAL_LINKED_WITH_TBB
 // The parallel fit (concurrency_tag Parallel_tag) gives, at 1, 2 and 8 threads, exactly
-// the sequential curvatures: every vertex's fit is its own, whatever thread runs it.
+// the sequential curvatures: every vertex's fit is its own, whatever thread runs it, and
+// the vertex normals and the extremality gradients sum their faces in face order.
 BOOST_AUTO_TEST_CASE(parallel_fits_equal_the_sequential_ones_at_any_thread_count)
 {
   SM m;
@@ -242,7 +243,8 @@ BOOST_AUTO_TEST_CASE(parallel_fits_equal_the_sequential_ones_at_any_thread_count
     std::size_t different = 0;
     for(std::size_t i = 0; i < sequential.size(); ++i)
       if(parallel[i].k1 != sequential[i].k1 || parallel[i].k2 != sequential[i].k2 ||
-         parallel[i].d1 != sequential[i].d1 || parallel[i].dk1 != sequential[i].dk1)
+         parallel[i].d1 != sequential[i].d1 || parallel[i].d2 != sequential[i].d2 ||
+         parallel[i].dk1 != sequential[i].dk1 || parallel[i].dk2 != sequential[i].dk2)
         ++different;
     BOOST_TEST(different == 0u, threads << " threads: " << different << " vertices differ");
   }

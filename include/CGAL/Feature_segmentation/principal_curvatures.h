@@ -123,7 +123,7 @@ void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, Verte
 #ifndef CGAL_LINKED_WITH_TBB
   static_assert(!parallel, "concurrency_tag(CGAL::Parallel_tag()) needs TBB (CGAL_LINKED_WITH_TBB)");
 #endif
-  Curvature_fitting<TriangleMesh, VPM, GT> fitting(idx, vpm);
+  Curvature_fitting<TriangleMesh, VPM, GT> fitting(idx, vpm, parallel);
   fitting.estimate(settings.rings, settings.radius * fitting.geometry().bounding_box_diagonal(), parallel);
   fitting.write(curvature_map);
 }

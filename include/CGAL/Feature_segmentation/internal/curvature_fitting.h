@@ -7,6 +7,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CURVATURE_FITTING_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/vertex_clusters.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -70,49 +71,66 @@ struct Mesh_geometry
     return (hi - lo).norm();
   }
 
-  Mesh_geometry(const Indexing& indexing, VPM vpm) : idx(indexing)
+  // `parallel`: the points, the faces and the vertex normals' directions by TBB's
+  // threads; each vertex normal sums its faces in face order and the mean edge length
+  // its edges in edge order, so the geometry is the same at any thread count.
+  Mesh_geometry(const Indexing& indexing, VPM vpm, bool parallel = false) : idx(indexing)
   {
     const TriangleMesh& tm = idx.mesh();
     points.resize(idx.number_of_vertices());
-    for(std::size_t i = 0; i < points.size(); ++i)
-    {
-      const auto& p = get(vpm, idx.vertex_at(i));
-      points[i] = Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    }
+    for_each_range(points.size(), parallel, 8192, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i)
+      {
+        const auto& p = get(vpm, idx.vertex_at(i));
+        points[i] = Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      }
+    });
     const std::size_t nf = idx.number_of_faces();
     face_normals.assign(nf, Vec3::Zero());
     face_areas.assign(nf, 0.);
     face_vertices.resize(nf);
+    // angle-weighted vertex normals (Thurmer and Wuthrich): insensitive to how a flat
+    // region of a CAD mesh happens to be triangulated; the corner angles by face, then
+    // summed per vertex in face order
+    std::vector<std::array<double, 3> > corner_angle(nf);
+    for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+      for(std::size_t f = first; f < last; ++f)
+      {
+        auto h = halfedge(idx.face_at(f), tm);
+        std::array<std::size_t, 3> t = { idx.id(source(h, tm)), idx.id(target(h, tm)),
+                                         idx.id(target(next(h, tm), tm)) };
+        face_vertices[f] = t;
+        Vec3 n = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
+        const double len = n.norm();
+        face_areas[f] = 0.5 * len;
+        if(len > 0 && std::isfinite(len))
+          face_normals[f] = n / len;
+        for(int c = 0; c < 3; ++c)
+        {
+          corner_angle[f][c] = 0.;
+          Vec3 a = points[t[(c + 1) % 3]] - points[t[c]];
+          Vec3 b = points[t[(c + 2) % 3]] - points[t[c]];
+          const double na = a.norm(), nb = b.norm();
+          if(na <= 0 || nb <= 0 || len <= 0)
+            continue;
+          const double cosang = std::max(-1., std::min(1., a.dot(b) / (na * nb)));
+          corner_angle[f][c] = std::acos(cosang);
+        }
+      }
+    });
     vertex_normals.assign(points.size(), Vec3::Zero());
     for(std::size_t f = 0; f < nf; ++f)
-    {
-      auto h = halfedge(idx.face_at(f), tm);
-      std::array<std::size_t, 3> t = { idx.id(source(h, tm)), idx.id(target(h, tm)),
-                                       idx.id(target(next(h, tm), tm)) };
-      face_vertices[f] = t;
-      Vec3 n = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
-      const double len = n.norm();
-      face_areas[f] = 0.5 * len;
-      if(len > 0 && std::isfinite(len))
-        face_normals[f] = n / len;
       for(int c = 0; c < 3; ++c)
+        if(corner_angle[f][c] != 0.)
+          vertex_normals[face_vertices[f][c]] += corner_angle[f][c] * face_normals[f];
+    for_each_range(vertex_normals.size(), parallel, 8192, [&](std::size_t first, std::size_t last) {
+      for(std::size_t v = first; v < last; ++v)
       {
-        // angle-weighted normals (Thurmer and Wuthrich): insensitive to how a flat
-        // region of a CAD mesh happens to be triangulated
-        Vec3 a = points[t[(c + 1) % 3]] - points[t[c]];
-        Vec3 b = points[t[(c + 2) % 3]] - points[t[c]];
-        const double na = a.norm(), nb = b.norm();
-        if(na <= 0 || nb <= 0 || len <= 0)
-          continue;
-        const double cosang = std::max(-1., std::min(1., a.dot(b) / (na * nb)));
-        vertex_normals[t[c]] += std::acos(cosang) * face_normals[f];
+        Vec3& n = vertex_normals[v];
+        const double len = n.norm();
+        n = len > 0 ? Vec3(n / len) : Vec3(Vec3::Zero());
       }
-    }
-    for(Vec3& n : vertex_normals)
-    {
-      const double len = n.norm();
-      n = len > 0 ? Vec3(n / len) : Vec3(Vec3::Zero());
-    }
+    });
     double sum = 0;
     for(auto e : idx.edge_list())
     {
@@ -147,9 +165,10 @@ class Curvature_fitting
 public:
   typedef Mesh_indexing<TriangleMesh> Indexing;
 
-  // `idx`: an indexing of the mesh, which must outlive the object
-  Curvature_fitting(const Indexing& idx, VPM vpm)
-    : m_idx(idx), m_geom(m_idx, vpm)
+  // `idx`: an indexing of the mesh, which must outlive the object; `parallel`: the
+  // geometry by TBB's threads (Mesh_geometry)
+  Curvature_fitting(const Indexing& idx, VPM vpm, bool parallel = false)
+    : m_idx(idx), m_geom(m_idx, vpm, parallel)
   {}
 
   // The neighbourhood of a vertex: its `rings` rings, extended through the edges to
@@ -223,7 +242,7 @@ public:
       Work_space ws;
       fit_range(0, nv, ws);
     }
-    extremality();
+    extremality(parallel);
   }
 
   template <typename VertexCurvatureMap>
@@ -428,10 +447,35 @@ private:
   }
 
   // Yoshizawa et al.: gradient of the signed k_max and k_min fields, linear over each
-  // triangle, averaged over the faces around each vertex weighted by area.
-  void extremality()
+  // triangle, averaged over the faces around each vertex weighted by area; the faces'
+  // gradients by TBB's threads if `parallel`, summed per vertex in face order (the same
+  // at any thread count).
+  void extremality(bool parallel)
   {
     const std::size_t nv = m_idx.number_of_vertices(), nf = m_idx.number_of_faces();
+    std::vector<Vec3> face_gmax(nf), face_gmin(nf);
+    for_each_range(nf, parallel, 8192, [&](std::size_t first, std::size_t last) {
+      for(std::size_t f = first; f < last; ++f)
+      {
+        Vec3 gradmax = Vec3::Zero(), gradmin = Vec3::Zero();
+        const double area = m_geom.face_areas[f];
+        if(area > 0 && m_geom.face_normals[f].squaredNorm() != 0)
+        {
+          const auto& t = m_geom.face_vertices[f];
+          const Vec3& fn = m_geom.face_normals[f];
+          for(int c = 0; c < 3; ++c)
+          {
+            // gradient of the hat function of corner c: n x (opposite edge) / (2 area)
+            const Vec3 opp = m_geom.points[t[(c + 2) % 3]] - m_geom.points[t[(c + 1) % 3]];
+            const Vec3 gphi = fn.cross(opp) / (2. * area);
+            gradmax += m_curv[t[c]].k_max() * gphi;
+            gradmin += m_curv[t[c]].k_min() * gphi;
+          }
+        }
+        face_gmax[f] = gradmax;
+        face_gmin[f] = gradmin;
+      }
+    });
     std::vector<Vec3> gmax(nv, Vec3::Zero()), gmin(nv, Vec3::Zero());
     std::vector<double> wsum(nv, 0.);
     for(std::size_t f = 0; f < nf; ++f)
@@ -440,32 +484,24 @@ private:
       if(area <= 0 || m_geom.face_normals[f].squaredNorm() == 0)
         continue;
       const auto& t = m_geom.face_vertices[f];
-      const Vec3& fn = m_geom.face_normals[f];
-      Vec3 gradmax = Vec3::Zero(), gradmin = Vec3::Zero();
       for(int c = 0; c < 3; ++c)
       {
-        // gradient of the hat function of corner c: n x (opposite edge) / (2 area)
-        const Vec3 opp = m_geom.points[t[(c + 2) % 3]] - m_geom.points[t[(c + 1) % 3]];
-        const Vec3 gphi = fn.cross(opp) / (2. * area);
-        gradmax += m_curv[t[c]].k_max() * gphi;
-        gradmin += m_curv[t[c]].k_min() * gphi;
-      }
-      for(int c = 0; c < 3; ++c)
-      {
-        gmax[t[c]] += area * gradmax;
-        gmin[t[c]] += area * gradmin;
+        gmax[t[c]] += area * face_gmax[f];
+        gmin[t[c]] += area * face_gmin[f];
         wsum[t[c]] += area;
       }
     }
-    for(std::size_t v = 0; v < nv; ++v)
-    {
-      if(wsum[v] <= 0) continue;
-      Vertex_curvature& c = m_curv[v];
-      const double emax = gmax[v].dot(c.d_max()) / wsum[v];
-      const double emin = gmin[v].dot(c.d_min()) / wsum[v];
-      if(c.k1_is_max()) { c.dk1 = emax; c.dk2 = emin; }
-      else { c.dk1 = emin; c.dk2 = emax; }
-    }
+    for_each_range(nv, parallel, 8192, [&](std::size_t first, std::size_t last) {
+      for(std::size_t v = first; v < last; ++v)
+      {
+        if(wsum[v] <= 0) continue;
+        Vertex_curvature& c = m_curv[v];
+        const double emax = gmax[v].dot(c.d_max()) / wsum[v];
+        const double emin = gmin[v].dot(c.d_min()) / wsum[v];
+        if(c.k1_is_max()) { c.dk1 = emax; c.dk2 = emin; }
+        else { c.dk1 = emin; c.dk2 = emax; }
+      }
+    });
   }
 
   const Indexing& m_idx;
