@@ -184,7 +184,8 @@ void estimate_principal_curvatures(const Mesh_indexing<TriangleMesh>& idx, Verte
 ///   \cgalParamNEnd
 ///
 ///   \cgalParamNBegin{concurrency_tag}
-///     \cgalParamDescription{a tag indicating whether the curvature fits run sequentially or on TBB's
+///     \cgalParamDescription{a tag indicating whether the curvature fits (with the vertex normals and
+///                           the derivatives along the principal directions) run sequentially or on TBB's
 ///                           threads}
 ///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
 ///     \cgalParamDefault{`CGAL::Sequential_tag`}
