@@ -64,7 +64,10 @@ struct Vertex_clusters
       auto first = neighbours.begin() + std::ptrdiff_t(begin[c]), last = neighbours.begin() + std::ptrdiff_t(begin[c + 1]);
       std::sort(first, last);
       last = std::unique(first, last);
-      out = std::size_t(std::copy(first, last, neighbours.begin() + std::ptrdiff_t(out)) - neighbours.begin());
+      // moved down to `out` (std::copy allows the overlap: its destination starts before
+      // the run, never inside it); a run already at `out` stays
+      if(out != begin[c]) std::copy(first, last, neighbours.begin() + std::ptrdiff_t(out));
+      out += std::size_t(last - first);
       neighbour_begin[c + 1] = out;
     }
     neighbours.resize(out);
