@@ -173,8 +173,8 @@ BOOST_AUTO_TEST_CASE(clusters_give_the_lengths_of_the_face_search_on_fandisk)
   check_hierarchy_against_faces(m, candidates, 20., 2);
 }
 
-// The searches of keep_creases_with_gap() end once their verdict is sure (AABB bounds on
-// the lengths within each ball); the verdicts must be those of the whole searches: on
+// The searches of keep_creases_with_gap() end once their verdict is sure (upper bounds on
+// the lengths within each ball, Gap_edge_hierarchy); the verdicts must be those of the whole searches: on
 // fandisk subdivided once (its creases pass) and on a coarse tube of 20 facets round,
 // which bend by 18 degrees (the band), but for one line pushed out to bend by 29 (its
 // candidates fail).
@@ -205,6 +205,29 @@ BOOST_AUTO_TEST_CASE(searches_end_once_their_verdict_is_sure)
       below_bound += full[i].crease <= bound[i].crease + tol && full[i].band <= bound[i].band + tol;
     }
     BOOST_TEST(below_bound == in.candidates.size());
+    // and above the clipped lengths of every crease and band edge in the ball, reached
+    // or not (brute force over the edges)
+    const double r = FS::internal::crease_gap_ball_radius(in.geometry.points, in.geometry.ends);
+    std::size_t above_all = 0;
+    for(std::size_t i = 0; i < in.candidates.size(); ++i)
+    {
+      const auto& ends = in.geometry.ends;
+      const auto& p = in.geometry.points;
+      const std::size_t c = in.candidates[i];
+      const Eigen::Vector3d mid = 0.5 * (p[ends[c][0]] + p[ends[c][1]]);
+      const Eigen::Vector3d t = (p[ends[c][1]] - p[ends[c][0]]).normalized();
+      FS::internal::Gap_lengths all;
+      for(std::size_t e = 0; e < ends.size(); ++e)
+      {
+        const double l = FS::internal::length_in_ball(p[ends[e][0]], p[ends[e][1]], mid, r);
+        if(in.angle[e] >= 20.) all.crease += l;
+        else if(FS::internal::is_crease_gap_band_edge(in.angle[e], in.angle[e], 20.))
+          all.band += l * FS::internal::band_weight(p[ends[e][1]] - p[ends[e][0]], t);
+      }
+      const double tol = 1e-9 * (1 + all.crease + all.band);
+      above_all += all.crease <= bound[i].crease + tol && all.band <= bound[i].band + tol;
+    }
+    BOOST_TEST(above_all == in.candidates.size());
     // the searches that end early find less than the whole search
     const auto partial = FS::internal::crease_gap_lengths(in.idx, in.geometry, in.angle, in.angle, 20., in.candidates,
                                                           false, 8, true,
@@ -230,6 +253,31 @@ BOOST_AUTO_TEST_CASE(searches_end_once_their_verdict_is_sure)
   BOOST_TEST(total_kept > 0u);
   BOOST_TEST(total_dropped > 0u);
   BOOST_TEST(total_early > 0u);
+}
+
+// The hierarchy of the bounds: a ball holding the whole mesh gets the whole lengths (the
+// root's sums, exact); a ball of radius 0.01 at the centre of a cube of side 4 (mesh
+// edges 0.1), 2 from every face, meets no leaf and gets nothing; a ball of radius 0.2
+// around the midpoint of a cube edge's middle mesh edge gets at least its clipped length
+// along the edge (0.4) and at most that plus the edges of the leaves near its sphere,
+// all on the cube's edges within one leaf's reach (8 mesh edges, 0.8) of the ball.
+BOOST_AUTO_TEST_CASE(hierarchy_sums_inside_and_bounds_across)
+{
+  std::vector<int> side;
+  const SM cube = fs_test::to_mesh<SM>(fs_test::box(4., 4., 4., 40, side));
+  const Gap_inputs in(cube);
+  const FS::internal::Gap_edge_hierarchy h(in.geometry, in.angle, in.angle, 20.);
+  std::vector<std::uint32_t> stack;
+  const Eigen::Vector3d t = Eigen::Vector3d::UnitX();
+  // the cube's 12 edges of length 4 are its creases; nothing is in the band
+  const FS::internal::Gap_lengths whole = h.lengths(Eigen::Vector3d(2, 2, 2), 100., t, true, stack);
+  BOOST_TEST(whole.crease == 48., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(whole.band == 0.);
+  const FS::internal::Gap_lengths none = h.lengths(Eigen::Vector3d(2, 2, 2), 0.01, t, true, stack);
+  BOOST_TEST(none.crease == 0.);
+  const FS::internal::Gap_lengths across = h.lengths(Eigen::Vector3d(2.05, 0, 0), 0.2, t, true, stack);
+  BOOST_TEST(across.crease >= 0.4 - 1e-12);
+  BOOST_TEST(across.crease <= 0.4 + 2 * 0.8 + 1e-12);
 }
 
 // A zero-length edge, which the face search does not cross: a grid folded by 30 degrees
