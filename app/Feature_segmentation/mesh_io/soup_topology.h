@@ -12,6 +12,7 @@
 
 #include "mesh_soup.h"
 
+#include <CGAL/Feature_segmentation/internal/faces_from_corners.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
 
 #include <CGAL/Kernel/global_functions.h>
@@ -342,8 +343,6 @@ void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
                 std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& vertex_of_point,
                 std::vector<typename boost::graph_traits<Mesh>::face_descriptor>& face_of_polygon)
 {
-  typedef boost::graph_traits<Mesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
   mesh.clear();
   std::size_t number_of_edges = 0;
   for(std::uint32_t t : topology.twin)
@@ -358,60 +357,11 @@ void build_mesh(const Mesh_soup& soup, const std::vector<Point>& points,
     put(vpm, vertex_of_point[i], points[i]);
   }
 
-  // The halfedge of each corner: from its vertex to the next corner's.
-  std::vector<halfedge_descriptor> halfedge_of(soup.indices.size(), GT::null_halfedge());
-  face_of_polygon.resize(soup.number_of_faces());
-  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
-  {
-    const auto face = add_face(mesh);
-    face_of_polygon[f] = face;
-    const std::uint32_t first = soup.begin[f], last = soup.begin[f + 1];
-    for(std::uint32_t c = first; c < last; ++c)
-    {
-      const std::uint32_t t = topology.twin[c];
-      halfedge_descriptor h;
-      if(t != no_corner && halfedge_of[t] != GT::null_halfedge())
-        h = opposite(halfedge_of[t], mesh);
-      else
-      {
-        h = halfedge(add_edge(mesh), mesh);
-        const std::uint32_t n = c + 1 == last ? first : c + 1;
-        set_target(h, vertex_of_point[soup.indices[n]], mesh);
-        set_target(opposite(h, mesh), vertex_of_point[soup.indices[c]], mesh);
-        set_face(opposite(h, mesh), GT::null_face(), mesh);
-      }
-      halfedge_of[c] = h;
-      set_face(h, face, mesh);
-    }
-    for(std::uint32_t c = first; c < last; ++c)
-    {
-      const std::uint32_t n = c + 1 == last ? first : c + 1;
-      set_next(halfedge_of[c], halfedge_of[n], mesh);
-      set_halfedge(vertex_of_point[soup.indices[n]], halfedge_of[c], mesh);
-    }
-    // The halfedge into the first vertex, as Euler::add_face does: walking the face from
-    // it lists the vertices in the file's order, from the first.
-    set_halfedge(face, halfedge_of[last - 1], mesh);
-  }
-
-  // Border halfedges. The corner c (a -> b) without a twin has the border halfedge
-  // b -> a as its opposite: it is a's halfedge (it runs into a), and it continues with
-  // the border halfedge leaving a. With one fan per vertex, a vertex has one of each.
-  std::vector<halfedge_descriptor> border_from(points.size(), GT::null_halfedge());
-  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
-    for(std::uint32_t c = soup.begin[f]; c < soup.begin[f + 1]; ++c)
-      if(topology.twin[c] == no_corner)
-      {
-        const std::uint32_t n = c + 1 == soup.begin[f + 1] ? soup.begin[f] : c + 1;
-        border_from[soup.indices[n]] = opposite(halfedge_of[c], mesh);
-      }
-  for(std::uint32_t c = 0; c < soup.indices.size(); ++c)
-    if(topology.twin[c] == no_corner)
-    {
-      const halfedge_descriptor border = opposite(halfedge_of[c], mesh);
-      set_next(border, border_from[soup.indices[c]], mesh);
-      set_halfedge(vertex_of_point[soup.indices[c]], border, mesh);
-    }
+  // the faces (and their halfedges and edges), then the border, as Euler::add_face
+  CGAL::Feature_segmentation::internal::add_faces_from_corners(
+    mesh, vertex_of_point, soup.number_of_faces(), [&](std::size_t f) { return soup.begin[f]; },
+    [&](std::size_t c) { return soup.indices[c]; }, [&](std::size_t c) { return std::size_t(topology.twin[c]); },
+    std::size_t(no_corner), face_of_polygon);
 }
 
 } // namespace internal

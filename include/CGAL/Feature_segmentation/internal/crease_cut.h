@@ -17,6 +17,7 @@
 #include <CGAL/Feature_segmentation/internal/compact_index.h>
 #include <CGAL/Feature_segmentation/internal/reserve_mesh.h>
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
+#include <CGAL/Feature_segmentation/internal/faces_from_corners.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/union_find.h>
 
@@ -238,46 +239,9 @@ bool add_cut_faces(const Mesh_indexing<TriangleMesh>& idx, const Crease_sectors&
       }
   });
   if(std::find(pinched.begin(), pinched.end(), 1) != pinched.end()) return false;
-  // the faces, their halfedges and edges
-  std::vector<halfedge_descriptor> halfedge_of(3 * nf, GTr::null_halfedge());
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto face = add_face(wm);
-    wf[f] = face;
-    for(std::size_t s = 3 * f; s < 3 * f + 3; ++s)
-    {
-      halfedge_descriptor h;
-      if(twin[s] != none && halfedge_of[twin[s]] != GTr::null_halfedge())
-        h = opposite(halfedge_of[twin[s]], wm);
-      else
-      {
-        h = halfedge(add_edge(wm), wm);
-        set_target(h, wv[to(s)], wm);
-        set_target(opposite(h, wm), wv[from(s)], wm);
-        set_face(opposite(h, wm), GTr::null_face(), wm);
-      }
-      halfedge_of[s] = h;
-      set_face(h, face, wm);
-    }
-    for(std::size_t s = 3 * f; s < 3 * f + 3; ++s)
-    {
-      set_next(halfedge_of[s], halfedge_of[next_slot(s)], wm);
-      set_halfedge(wv[to(s)], halfedge_of[s], wm);
-    }
-    set_halfedge(face, halfedge_of[3 * f + 2], wm);
-  }
-  // the border: the border halfedge opposite slot s (from(s) -> to(s)) runs into
-  // from(s), is its halfedge, and goes on with the border halfedge leaving from(s)
-  std::vector<halfedge_descriptor> border_from(nw, GTr::null_halfedge());
-  for(std::size_t s = 0; s < 3 * nf; ++s)
-    if(twin[s] == none) border_from[to(s)] = opposite(halfedge_of[s], wm);
-  for(std::size_t s = 0; s < 3 * nf; ++s)
-    if(twin[s] == none)
-    {
-      const halfedge_descriptor border = opposite(halfedge_of[s], wm);
-      set_next(border, border_from[from(s)], wm);
-      set_halfedge(wv[from(s)], border, wm);
-    }
+  // the faces, their halfedges and edges, then the border
+  add_faces_from_corners(wm, wv, nf, [](std::size_t f) { return 3 * f; }, from, [&](std::size_t s) { return twin[s]; },
+                         none, wf);
   return true;
 }
 
