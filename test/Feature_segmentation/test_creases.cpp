@@ -6,6 +6,14 @@
 
 #include "crease_meshes.h"
 
+#include <CGAL/Feature_segmentation/internal/faces_from_corners.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <map>
+#include <utility>
+#include <vector>
+
 BOOST_AUTO_TEST_SUITE(creases)
 
 BOOST_AUTO_TEST_CASE(cube_at_two_resolutions_is_six_patches)
@@ -30,6 +38,38 @@ BOOST_AUTO_TEST_CASE(plate_with_a_thin_slot_is_its_ten_faces)
   fs_test::slotted_plate_is_its_ten_faces<SM>(1);
   fs_test::slotted_plate_is_its_ten_faces<SM>(2); // the same shape, finer: the same patches
   fs_test::slotted_plate_is_its_ten_faces<Poly>(1);
+}
+
+// The elements of `direct` and `euler` that differ: the target, next halfedge and face of
+// every halfedge, the halfedge of every vertex and face (by their indices).
+template <typename Mesh>
+std::size_t halfedge_structure_differences(const Mesh& direct, const Mesh& euler)
+{
+  namespace I = FS::internal;
+  const I::Mesh_indexing<Mesh> a(direct), b(euler);
+  BOOST_REQUIRE(a.number_of_vertices() == b.number_of_vertices());
+  BOOST_REQUIRE(a.number_of_edges() == b.number_of_edges());
+  BOOST_REQUIRE(a.number_of_faces() == b.number_of_faces());
+  std::size_t differences = 0;
+  auto face_id = [](const I::Mesh_indexing<Mesh>& x, auto h) { return x.face_id(h); };
+  auto hb = halfedges(euler).begin();
+  for(auto h : halfedges(direct))
+  {
+    const auto g = *hb++;
+    if(a.halfedge_id(h) != b.halfedge_id(g) || a.id(target(h, direct)) != b.id(target(g, euler)) ||
+       a.halfedge_id(next(h, direct)) != b.halfedge_id(next(g, euler)) || face_id(a, h) != face_id(b, g))
+      ++differences;
+  }
+  for(std::size_t i = 0; i < a.number_of_vertices(); ++i)
+  {
+    const auto h = halfedge(a.vertex_at(i), direct), g = halfedge(b.vertex_at(i), euler);
+    const bool isolated = h == boost::graph_traits<Mesh>::null_halfedge();
+    if(isolated != (g == boost::graph_traits<Mesh>::null_halfedge()) || (!isolated && a.halfedge_id(h) != b.halfedge_id(g)))
+      ++differences;
+  }
+  for(std::size_t f = 0; f < a.number_of_faces(); ++f)
+    if(a.halfedge_id(halfedge(a.face_at(f), direct)) != b.halfedge_id(halfedge(b.face_at(f), euler))) ++differences;
+  return differences;
 }
 
 // The cut copy's faces, added halfedge by halfedge (add_cut_faces), are the mesh that
@@ -58,31 +98,73 @@ void cut_faces_are_eulers(const Mesh& m)
       v[sectors.corner_working[3 * f]], v[sectors.corner_working[3 * f + 1]], v[sectors.corner_working[3 * f + 2]] };
     BOOST_REQUIRE(CGAL::Euler::add_face(t, euler) != boost::graph_traits<Mesh>::null_face());
   }
-  const Mesh& direct = *cut.mesh;
-  const I::Mesh_indexing<Mesh> a(direct), b(euler);
-  BOOST_REQUIRE(a.number_of_vertices() == b.number_of_vertices());
-  BOOST_REQUIRE(a.number_of_edges() == b.number_of_edges());
-  BOOST_REQUIRE(a.number_of_faces() == b.number_of_faces());
-  std::size_t differences = 0;
-  auto face_id = [](const I::Mesh_indexing<Mesh>& x, auto h) { return x.face_id(h); };
-  auto hb = halfedges(euler).begin();
-  for(auto h : halfedges(direct))
+  BOOST_TEST(halfedge_structure_differences(*cut.mesh, euler) == 0u);
+}
+
+// add_faces_from_corners() on polygons with a border: a 4 x 3 grid of vertices (unit
+// cells), its six cells quads but for the first, split into two triangles, gives the
+// mesh Euler::add_face makes face by face, element for element (7 faces, 12 vertices,
+// 18 edges: 17 of the grid and the first cell's diagonal).
+template <typename Mesh>
+void corner_faces_are_eulers()
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const auto id = [](int i, int j) { return std::size_t(j * 4 + i); };
+  std::vector<std::vector<std::size_t> > polygons = { { id(0, 0), id(1, 0), id(1, 1) }, { id(0, 0), id(1, 1), id(0, 1) } };
+  for(int j = 0; j < 2; ++j)
+    for(int i = 0; i < 3; ++i)
+      if(i + j > 0) polygons.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) });
+  std::vector<std::size_t> first(1, 0), corner_vertex;
+  for(const auto& p : polygons)
   {
-    const auto g = *hb++;
-    if(a.halfedge_id(h) != b.halfedge_id(g) || a.id(target(h, direct)) != b.id(target(g, euler)) ||
-       a.halfedge_id(next(h, direct)) != b.halfedge_id(next(g, euler)) || face_id(a, h) != face_id(b, g))
-      ++differences;
+    corner_vertex.insert(corner_vertex.end(), p.begin(), p.end());
+    first.push_back(corner_vertex.size());
   }
-  for(std::size_t i = 0; i < a.number_of_vertices(); ++i)
+  // corner c runs from its vertex to the next corner's; its twin runs the other way
+  const std::size_t none = std::size_t(-1);
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> corner_of;
+  for(std::size_t f = 0; f + 1 < first.size(); ++f)
+    for(std::size_t c = first[f]; c < first[f + 1]; ++c)
+      corner_of[{ corner_vertex[c], corner_vertex[c + 1 == first[f + 1] ? first[f] : c + 1] }] = c;
+  std::vector<std::size_t> twin(corner_vertex.size(), none);
+  for(const auto& [ends, c] : corner_of)
   {
-    const auto h = halfedge(a.vertex_at(i), direct), g = halfedge(b.vertex_at(i), euler);
-    const bool isolated = h == boost::graph_traits<Mesh>::null_halfedge();
-    if(isolated != (g == boost::graph_traits<Mesh>::null_halfedge()) || (!isolated && a.halfedge_id(h) != b.halfedge_id(g)))
-      ++differences;
+    const auto o = corner_of.find({ ends.second, ends.first });
+    if(o != corner_of.end()) twin[c] = o->second;
   }
-  for(std::size_t f = 0; f < a.number_of_faces(); ++f)
-    if(a.halfedge_id(halfedge(a.face_at(f), direct)) != b.halfedge_id(halfedge(b.face_at(f), euler))) ++differences;
-  BOOST_TEST(differences == 0u);
+  auto points = [](Mesh& m) {
+    std::vector<vertex_descriptor> v;
+    for(int j = 0; j < 3; ++j)
+      for(int i = 0; i < 4; ++i)
+      {
+        v.push_back(add_vertex(m));
+        put(get(CGAL::vertex_point, m), v.back(), typename boost::property_traits<
+            typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type(double(i), double(j), 0.));
+      }
+    return v;
+  };
+  Mesh direct, euler;
+  const std::vector<vertex_descriptor> dv = points(direct), ev = points(euler);
+  std::vector<typename boost::graph_traits<Mesh>::face_descriptor> faces;
+  FS::internal::add_faces_from_corners(direct, dv, polygons.size(), [&](std::size_t f) { return first[f]; },
+                                       [&](std::size_t c) { return corner_vertex[c]; },
+                                       [&](std::size_t c) { return twin[c]; }, none, faces);
+  for(const auto& p : polygons)
+  {
+    std::vector<vertex_descriptor> fv;
+    for(std::size_t v : p) fv.push_back(ev[v]);
+    BOOST_REQUIRE(CGAL::Euler::add_face(fv, euler) != boost::graph_traits<Mesh>::null_face());
+  }
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(direct));
+  BOOST_TEST(faces.size() == 7u);
+  BOOST_TEST(num_edges(direct) == 18u);
+  BOOST_TEST(halfedge_structure_differences(direct, euler) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(corner_faces_are_those_of_euler_add_face)
+{
+  corner_faces_are_eulers<SM>();
+  corner_faces_are_eulers<Poly>();
 }
 
 fs_test::Soup folded_sheet()
