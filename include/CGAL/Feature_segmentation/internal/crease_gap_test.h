@@ -88,17 +88,17 @@ public:
   // the edges of `g` that bend by crease_angle or more, or are band edges
   Gap_edge_hierarchy(const Edge_geometry& g, const std::vector<double>& angle, const std::vector<double>& band_angle,
                      double crease_angle)
-    : m_points(g.points)
   {
+    std::vector<Item> items;
     for(std::size_t e = 0; e < g.ends.size(); ++e)
     {
       const bool crease = angle[e] >= crease_angle;
       if(!crease && !is_crease_gap_band_edge(angle[e], band_angle[e], crease_angle)) continue;
-      m_items.push_back(Item{ g.ends[e][0], g.ends[e][1], crease });
+      items.push_back(Item{ g.ends[e][0], g.ends[e][1], crease });
     }
-    if(m_items.empty()) return;
-    m_nodes.reserve(2 * (m_items.size() / leaf_size + 1));
-    build(0, m_items.size());
+    if(items.empty()) return;
+    m_nodes.reserve(items.size() / 2 + 1); // a leaf holds leaf_size / 2 edges or more
+    build(g.points, items, 0, items.size());
   }
 
   // At least the lengths within the ball of radius r around c (the length_in_ball() of
@@ -152,25 +152,23 @@ private:
     Eigen::Vector3d lo, hi;
     double crease = 0;
     Band_tensor band;
-    std::size_t first = 0, last = 0;
     std::uint32_t left = no_child, right = no_child;
   };
 
   // the node of items [first, last): split at the median of the midpoints along the
   // box's longest axis (ties by the edges' order: the same tree on every run)
-  std::uint32_t build(std::size_t first, std::size_t last)
+  std::uint32_t build(const std::vector<Eigen::Vector3d>& points, std::vector<Item>& items, std::size_t first,
+                      std::size_t last)
   {
     const std::uint32_t id = std::uint32_t(m_nodes.size());
     m_nodes.emplace_back();
     Node n;
-    n.first = first;
-    n.last = last;
     n.lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     n.hi = -n.lo;
     for(std::size_t i = first; i < last; ++i)
     {
-      const Eigen::Vector3d& a = m_points[m_items[i].a];
-      const Eigen::Vector3d& b = m_points[m_items[i].b];
+      const Eigen::Vector3d& a = points[items[i].a];
+      const Eigen::Vector3d& b = points[items[i].b];
       n.lo = n.lo.cwiseMin(a).cwiseMin(b);
       n.hi = n.hi.cwiseMax(a).cwiseMax(b);
     }
@@ -181,14 +179,14 @@ private:
       if(extent.y() > extent[axis]) axis = 1;
       if(extent.z() > extent[axis]) axis = 2;
       const std::size_t mid = first + (last - first) / 2;
-      std::nth_element(m_items.begin() + std::ptrdiff_t(first), m_items.begin() + std::ptrdiff_t(mid),
-                       m_items.begin() + std::ptrdiff_t(last), [&](const Item& x, const Item& y) {
-                         const double px = m_points[x.a][axis] + m_points[x.b][axis];
-                         const double py = m_points[y.a][axis] + m_points[y.b][axis];
+      std::nth_element(items.begin() + std::ptrdiff_t(first), items.begin() + std::ptrdiff_t(mid),
+                       items.begin() + std::ptrdiff_t(last), [&](const Item& x, const Item& y) {
+                         const double px = points[x.a][axis] + points[x.b][axis];
+                         const double py = points[y.a][axis] + points[y.b][axis];
                          return px < py || (px == py && (x.a < y.a || (x.a == y.a && x.b < y.b)));
                        });
-      n.left = build(first, mid);
-      n.right = build(mid, last);
+      n.left = build(points, items, first, mid);
+      n.right = build(points, items, mid, last);
       const Node& l = m_nodes[n.left];
       const Node& r = m_nodes[n.right];
       n.crease = l.crease + r.crease;
@@ -198,16 +196,14 @@ private:
     else
       for(std::size_t i = first; i < last; ++i)
       {
-        const Eigen::Vector3d d = m_points[m_items[i].b] - m_points[m_items[i].a];
-        if(m_items[i].crease) n.crease += d.norm();
+        const Eigen::Vector3d d = points[items[i].b] - points[items[i].a];
+        if(items[i].crease) n.crease += d.norm();
         else n.band.add(d, d.norm());
       }
     m_nodes[id] = n;
     return id;
   }
 
-  const std::vector<Eigen::Vector3d>& m_points;
-  std::vector<Item> m_items;
   std::vector<Node> m_nodes;
 };
 
