@@ -101,6 +101,25 @@ void cut_faces_are_eulers(const Mesh& m)
   BOOST_TEST(halfedge_structure_differences(*cut.mesh, euler) == 0u);
 }
 
+// every_vertex_has_one_fan() on faces given by their corners (`first`, `corner_vertex`,
+// `twin` as add_faces_from_corners() takes them) over `nv` vertices.
+bool corners_have_one_fan_each(std::size_t nv, const std::vector<std::size_t>& first,
+                               const std::vector<std::size_t>& corner_vertex, const std::vector<std::size_t>& twin)
+{
+  std::vector<std::size_t> face_of(corner_vertex.size()), begin(nv + 1, 0), at(corner_vertex.size());
+  for(std::size_t f = 0; f + 1 < first.size(); ++f)
+    for(std::size_t c = first[f]; c < first[f + 1]; ++c) face_of[c] = f;
+  for(std::size_t v : corner_vertex) ++begin[v + 1];
+  for(std::size_t v = 0; v < nv; ++v) begin[v + 1] += begin[v];
+  std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+  for(std::size_t c = 0; c < corner_vertex.size(); ++c) at[fill[corner_vertex[c]]++] = c;
+  const auto next = [&](std::size_t c) { return c + 1 == first[face_of[c] + 1] ? first[face_of[c]] : c + 1; };
+  const auto previous = [&](std::size_t c) { return c == first[face_of[c]] ? first[face_of[c] + 1] - 1 : c - 1; };
+  return FS::internal::every_vertex_has_one_fan(nv, [&](std::size_t v) { return begin[v]; },
+                                                [&](std::size_t k) { return at[k]; }, next, previous,
+                                                [&](std::size_t c) { return twin[c]; }, std::size_t(-1), false);
+}
+
 // add_faces_from_corners() on polygons with a border: a 4 x 3 grid of vertices (unit
 // cells), its six cells quads but for the first, split into two triangles, gives the
 // mesh Euler::add_face makes face by face, element for element (7 faces, 12 vertices,
@@ -159,12 +178,28 @@ void corner_faces_are_eulers()
   BOOST_TEST(faces.size() == 7u);
   BOOST_TEST(num_edges(direct) == 18u);
   BOOST_TEST(halfedge_structure_differences(direct, euler) == 0u);
+  BOOST_TEST(corners_have_one_fan_each(12, first, corner_vertex, twin));
 }
 
 BOOST_AUTO_TEST_CASE(corner_faces_are_those_of_euler_add_face)
 {
   corner_faces_are_eulers<SM>();
   corner_faces_are_eulers<Poly>();
+}
+
+// Two triangles that share one vertex (a bow tie) pinch it: two fans there; with a third
+// triangle joining them along an edge each, one fan again.
+BOOST_AUTO_TEST_CASE(a_vertex_of_two_fans_is_found)
+{
+  const std::size_t none = std::size_t(-1);
+  // vertex 0 is shared; triangles (0 1 2) and (0 3 4)
+  BOOST_TEST(!corners_have_one_fan_each(5, { 0, 3, 6 }, { 0, 1, 2, 0, 3, 4 }, std::vector<std::size_t>(6, none)));
+  // with (0 2 3) after them: corner 2 (2 -> 0) twins corner 6 (0 -> 2), corner 3 (0 -> 3)
+  // twins corner 8 (3 -> 0)
+  std::vector<std::size_t> twin(9, none);
+  twin[2] = 6; twin[6] = 2;
+  twin[3] = 8; twin[8] = 3;
+  BOOST_TEST(corners_have_one_fan_each(5, { 0, 3, 6, 9 }, { 0, 1, 2, 0, 3, 4, 0, 2, 3 }, twin));
 }
 
 fs_test::Soup folded_sheet()

@@ -292,46 +292,12 @@ Soup_topology analyse_edges(const std::string& path, const Mesh_soup& soup,
   if(!topology.is_consistently_oriented)
     return topology;
 
-  // One fan per vertex: turning around v from corner to corner across edges must visit
-  // every corner at v. A walk starts at a border (if there is one) so that it covers an
-  // open fan whole.
-  std::vector<char> pinched_in(chunks == 0 ? 0 : (vc.begin.size() - 1 + chunk - 1) / chunk, 0);
-  CGAL::Feature_segmentation::internal::for_each_range(pinched_in.size(), true, 1, [&](std::size_t first_chunk, std::size_t last_chunk) {
-   for(std::size_t ch = first_chunk; ch < last_chunk; ++ch)
-   {
-    const std::uint32_t chunk_end = std::uint32_t((std::min)(vc.begin.size() - 1, (ch + 1) * chunk));
-    for(std::uint32_t v = std::uint32_t(ch * chunk); v < chunk_end && !pinched_in[ch]; ++v)
-    {
-      const std::uint32_t first = vc.begin[v], last = vc.begin[v + 1];
-      if(last - first < 2)
-        continue;
-      std::uint32_t start = vc.corners[first];
-      for(std::uint32_t k = first; k < last; ++k)
-        if(topology.twin[previous_corner(soup, vc, vc.corners[k])] == no_corner)
-        {
-          start = vc.corners[k]; // the edge into v from this face is on the border
-          break;
-        }
-      std::uint32_t visited = 1;
-      for(std::uint32_t c = start;;)
-      {
-        // Across the edge from v to the next vertex, to the twin's face, whose corner at v
-        // follows the twin corner.
-        const std::uint32_t t = topology.twin[c];
-        if(t == no_corner)
-          break;
-        c = next_corner(soup, vc, t);
-        if(c == start)
-          break;
-        if(++visited > last - first)
-          break;
-      }
-      if(visited != last - first)
-        pinched_in[ch] = 1;
-    }
-   }
-  });
-  topology.has_manifold_vertices = std::find(pinched_in.begin(), pinched_in.end(), 1) == pinched_in.end();
+  // one fan per vertex (the corners at each vertex: vc)
+  topology.has_manifold_vertices = CGAL::Feature_segmentation::internal::every_vertex_has_one_fan(
+    vc.begin.size() - 1, [&](std::size_t v) { return vc.begin[v]; }, [&](std::size_t k) { return vc.corners[k]; },
+    [&](std::size_t c) { return next_corner(soup, vc, std::uint32_t(c)); },
+    [&](std::size_t c) { return previous_corner(soup, vc, std::uint32_t(c)); },
+    [&](std::size_t c) { return std::size_t(topology.twin[c]); }, std::size_t(no_corner), true);
   return topology;
 }
 

@@ -202,8 +202,7 @@ bool add_cut_faces(const Mesh_indexing<TriangleMesh>& idx, const Crease_sectors&
   });
   for(std::size_t s = 0; s < 3 * nf; ++s)
     if(twin[s] != none && twin[twin[s]] != s) return false;
-  // one fan per copy: turning around it from slot to slot across its edges visits every
-  // slot that leaves it (from a border, if it has one)
+  // one fan per copy (the slots leaving each copy, CSR)
   std::vector<std::size_t> begin(nw + 1, 0), out(3 * nf);
   for(std::size_t s = 0; s < 3 * nf; ++s) ++begin[from(s) + 1];
   for(std::size_t w = 0; w < nw; ++w) begin[w + 1] += begin[w];
@@ -211,34 +210,9 @@ bool add_cut_faces(const Mesh_indexing<TriangleMesh>& idx, const Crease_sectors&
     std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
     for(std::size_t s = 0; s < 3 * nf; ++s) out[fill[from(s)]++] = s;
   }
-  const std::size_t chunk = 16384;
-  std::vector<char> pinched((nw + chunk - 1) / chunk, 0);
-  for_each_range(pinched.size(), parallel, 1, [&](std::size_t first_chunk, std::size_t last_chunk) {
-    for(std::size_t ch = first_chunk; ch < last_chunk; ++ch)
-      for(std::size_t w = ch * chunk; w < (std::min)(nw, (ch + 1) * chunk) && !pinched[ch]; ++w)
-      {
-        const std::size_t first = begin[w], last = begin[w + 1];
-        if(last - first < 2) continue;
-        std::size_t start = out[first];
-        for(std::size_t k = first; k < last; ++k)
-          if(twin[previous_slot(out[k])] == none)
-          {
-            start = out[k];
-            break;
-          }
-        std::size_t visited = 1;
-        for(std::size_t s = start;;)
-        {
-          const std::size_t t = twin[s];
-          if(t == none) break;
-          s = next_slot(t);
-          if(s == start) break;
-          if(++visited > last - first) break;
-        }
-        if(visited != last - first) pinched[ch] = 1;
-      }
-  });
-  if(std::find(pinched.begin(), pinched.end(), 1) != pinched.end()) return false;
+  if(!every_vertex_has_one_fan(nw, [&](std::size_t w) { return begin[w]; }, [&](std::size_t k) { return out[k]; },
+                               next_slot, previous_slot, [&](std::size_t s) { return twin[s]; }, none, parallel))
+    return false;
   // the faces, their halfedges and edges, then the border
   add_faces_from_corners(wm, wv, nf, [](std::size_t f) { return 3 * f; }, from, [&](std::size_t s) { return twin[s]; },
                          none, wf);

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Adding a mesh's faces from their corners and the twin links between them, in time
-// linear in the mesh: used by the crease cut's copy (crease_cut.h) and by the programs'
+// linear in the mesh, and its precondition (one fan of faces per vertex): used by the crease cut's copy (crease_cut.h) and by the programs'
 // readers (app/.../soup_topology.h).
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_FACES_FROM_CORNERS_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_FACES_FROM_CORNERS_H
 
+#include <CGAL/Feature_segmentation/internal/parallel_for.h>
+
 #include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
 
 #include <cstddef>
 #include <vector>
@@ -14,6 +18,51 @@
 namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
+
+// Whether every vertex has a single fan of faces (the precondition of
+// add_faces_from_corners()): turning around vertex v from corner to corner across its
+// edges visits every corner at v. The corners at v (leaving it) are corner_at(k) for k
+// from corner_begin(v) to corner_begin(v + 1) - 1; next_corner(c) and previous_corner(c)
+// are the corners after and before c in its face; twin_of(c) as in
+// add_faces_from_corners(). A walk starts from a corner whose previous corner has no
+// twin (the edge into v is on the border), if any, so that it covers an open fan whole.
+// The vertices in chunks by TBB's threads if `parallel`.
+template <typename CornerBegin, typename CornerAt, typename NextCorner, typename PreviousCorner, typename TwinOf>
+bool every_vertex_has_one_fan(std::size_t nv, const CornerBegin& corner_begin, const CornerAt& corner_at,
+                              const NextCorner& next_corner, const PreviousCorner& previous_corner,
+                              const TwinOf& twin_of, std::size_t none, bool parallel)
+{
+  const std::size_t chunk = 16384;
+  std::vector<char> pinched((nv + chunk - 1) / chunk, 0);
+  for_each_range(pinched.size(), parallel, 1, [&](std::size_t first_chunk, std::size_t last_chunk) {
+    for(std::size_t ch = first_chunk; ch < last_chunk; ++ch)
+      for(std::size_t v = ch * chunk; v < (std::min)(nv, (ch + 1) * chunk) && !pinched[ch]; ++v)
+      {
+        const std::size_t first = std::size_t(corner_begin(v)), last = std::size_t(corner_begin(v + 1));
+        if(last - first < 2) continue;
+        std::size_t start = std::size_t(corner_at(first));
+        for(std::size_t k = first; k < last; ++k)
+          if(std::size_t(twin_of(previous_corner(std::size_t(corner_at(k))))) == none)
+          {
+            start = std::size_t(corner_at(k));
+            break;
+          }
+        std::size_t visited = 1;
+        for(std::size_t c = start;;)
+        {
+          // across the edge from v to the next vertex, to the twin's face, whose corner
+          // at v follows the twin
+          const std::size_t t = std::size_t(twin_of(c));
+          if(t == none) break;
+          c = std::size_t(next_corner(t));
+          if(c == start) break;
+          if(++visited > last - first) break;
+        }
+        if(visited != last - first) pinched[ch] = 1;
+      }
+  });
+  return std::find(pinched.begin(), pinched.end(), 1) == pinched.end();
+}
 
 // Adds `nf` faces to `mesh`, which holds the vertices `vertex` and nothing else, halfedge
 // by halfedge, as CGAL::Euler::add_face would add them one by one in face order: the same
