@@ -232,4 +232,54 @@ BOOST_AUTO_TEST_CASE(noisy_square_is_one_plane_without_border)
   BOOST_TEST(std::count(marks.begin(), marks.end(), char(1)) == 0);
 }
 
+BOOST_AUTO_TEST_CASE(lightly_noisy_fillet_gets_borders_where_planes_dominate)
+{
+  // noise of up to 0.002 (0.1% of the diagonal, 4% of an edge): rougher than a clean
+  // tessellation, smoother than the noisy meshes, as a smooth model
+  namespace I = FS::internal;
+  const SM m = fs_test::to_mesh<SM>(noisy_filleted_corner(0.002));
+  const I::Mesh_indexing<SM> idx(m);
+  const auto vpm = get(CGAL::vertex_point, m);
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area;
+  I::face_geometry(idx, vpm, normal, area, centroid);
+  std::vector<std::uint32_t> begin, ring;
+  I::vertex_adjacent_faces(idx, begin, ring);
+  const double roughness = I::normal_roughness(normal, begin, ring);
+  BOOST_TEST_MESSAGE("roughness " << roughness);
+  BOOST_REQUIRE(roughness > I::crease_filter_roughness);
+  BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);
+
+  // the floor and the wall (2 of the area 2 + 0.3 pi / 2 = 2.47, give or take the fillet
+  // rows the growth takes) hold more than crease_rough_plane_share: their borders are
+  // marked on both tangent lines, as on a noisy mesh
+  bool noisy = true;
+  const std::vector<char> marks = crease_marks(idx, noisy);
+  BOOST_TEST(!noisy);
+  std::set<int> lines;
+  for(auto e : edges(m))
+  {
+    if(marks[e.idx()] != 2) continue;
+    const double i = 0.5 * double(source(halfedge(e, m), m).idx() % profile_points +
+                                  target(halfedge(e, m), m).idx() % profile_points);
+    BOOST_TEST(to_tangent_line(i) <= 2.01 * 0.5 * pi * fillet_radius / fillet_segments);
+    lines.insert(i < floor_segments + 0.5 * fillet_segments ? 0 : 1);
+  }
+  BOOST_TEST(lines.size() == 2u);
+
+  // the planes' share as mark_plane_borders() measures it on the filtered normals; asked
+  // for more, it marks nothing
+  const std::vector<Eigen::Vector3d> filtered =
+    I::filter_face_normals(normal, roughness, area, centroid, begin, ring, I::crease_smooth_filter_iterations,
+                           I::crease_filter_sigma_r, I::crease_filter_roughness);
+  const double total = 2. + 0.5 * pi * fillet_radius, row = 0.5 * pi * fillet_radius / fillet_segments;
+  std::vector<char> none(idx.number_of_edges(), 0), all(idx.number_of_edges(), 0);
+  const double share = I::mark_plane_borders(idx, filtered, area, centroid, 2., all, 0.);
+  BOOST_TEST(share >= (2. - 4 * row) / total);
+  BOOST_TEST(share <= (2. + 4 * row) / total);
+  BOOST_TEST(std::count(all.begin(), all.end(), char(2)) >= 2 * rulings);
+  BOOST_TEST(I::mark_plane_borders(idx, filtered, area, centroid, 2., none, share + 0.01) == share);
+  BOOST_TEST(std::count(none.begin(), none.end(), char(0)) == std::ptrdiff_t(none.size()));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -131,7 +131,8 @@ public:
   ///   tessellation of a CAD part, the curvature discontinuities (where a fillet meets a plane or a
   ///   wider curved face without a crease angle) join the creases, and seam lines (where two curved
   ///   faces meet and the smaller principal curvature steps) join the crest lines; on a noisy mesh,
-  ///   the borders of its planes (where a plane meets a fillet or a curved face) join the creases}
+  ///   or a rough one whose planes hold a fifth of its area, the borders of its planes (where a
+  ///   plane meets a fillet or a curved face) join the creases}
   ///   \cgalParamType{`bool`}
   ///   \cgalParamDefault{`default_tangent_discontinuities` (`true`)} \cgalParamNEnd
   ///   \cgalParamNBegin{crest_lines_on_clean_tessellations} \cgalParamDescription{whether the crest

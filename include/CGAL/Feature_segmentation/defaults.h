@@ -39,7 +39,8 @@ constexpr int default_crease_filter_iterations = 40;
 /// of a CAD part, the curvature discontinuities (a fillet meeting a plane or a wider
 /// curved face without a crease) join the creases, and seam lines (two curved faces
 /// meeting where the smaller principal curvature steps) join the crest lines; on a noisy
-/// mesh, the borders of its planes join the creases.
+/// mesh, or a rough one whose planes hold a fifth of its area, the borders of its planes
+/// join the creases.
 constexpr bool default_tangent_discontinuities = true;
 
 /// \ingroup PkgFeatureSegmentationSegmentation

@@ -63,14 +63,15 @@ struct Plane_thresholds
 };
 
 // Marks with 2 in `is_crease` the non-crease edges of the mesh of `idx` that border a
-// plane (file comment); `normal`: the filtered unit face normals (zero for a degenerate
-// face), `area` and `centroid`: the faces', `diagonal`: the bounding box's; `is_crease`
-// holds the creases (1). Deterministic: seeds in order of flatness, then of index, each
-// region grown breadth first.
+// plane (file comment), if the planes hold `least_share` of the area or more; returns
+// their share of the area. `normal`: the filtered unit face normals (zero for a
+// degenerate face), `area` and `centroid`: the faces', `diagonal`: the bounding box's;
+// `is_crease` holds the creases (1). Deterministic: seeds in order of flatness, then of
+// index, each region grown breadth first.
 template <typename TriangleMesh>
-void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal,
-                        const std::vector<double>& area, const std::vector<Eigen::Vector3d>& centroid,
-                        double diagonal, std::vector<char>& is_crease)
+double mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal,
+                          const std::vector<double>& area, const std::vector<Eigen::Vector3d>& centroid,
+                          double diagonal, std::vector<char>& is_crease, double least_share = 0.)
 {
   typedef Plane_thresholds Limits;
   const TriangleMesh& tm = idx.mesh();
@@ -223,6 +224,15 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
     }
   }
 
+  double planar = 0., total = 0.;
+  for(Id f = 0; f < nf; ++f)
+  {
+    total += area[f];
+    if(in_plane(f)) planar += area[f];
+  }
+  const double share = total > 0 ? planar / total : 0.;
+  if(share < least_share) return share;
+
   // the faces within Limits::crease_rows steps of a crease
   std::vector<unsigned char> near(nf, (unsigned char)(Limits::crease_rows + 1));
   {
@@ -251,6 +261,7 @@ void mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vecto
       if(g != none && region[g] != region[f] && near[g] > Limits::crease_rows) is_crease[across_edge[3 * f + k]] = 2;
     }
   }
+  return share;
 }
 
 } // namespace internal
