@@ -3,7 +3,7 @@
 // on face normals that a bilateral filter has cleaned of noise when the tessellation is
 // rough, kept where the gap test says they are no strong bend of a smooth surface, and
 // the curvature discontinuities: between flat regions on a clean tessellation, at the
-// borders of planes on a noisy one; used by
+// borders of planes on a noisy one and on a rough one that is largely planes; used by
 // crease_cut.h, which cuts the mesh open along them.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_DETECTION_H

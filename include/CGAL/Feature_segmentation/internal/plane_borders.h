@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The borders of the planes of a noisy CAD part, where a plane runs into a fillet or any
-// curved face without a crease. Noise hides what the curvature discontinuities of a
+// The borders of the planes of a noisy CAD part (or of a lightly noisy one, as rough as a
+// smooth model: crease_detection.h), where a plane runs into a fillet or any curved face
+// without a crease. Noise hides what the curvature discontinuities of a
 // clean tessellation (tangent_discontinuities.h) read from exactly flat regions, but
 // after the crease filter (crease_detection.h) a plane's face normals agree to a degree
 // or two while a fillet's turn steadily. Regions are grown from the flattest faces: a
