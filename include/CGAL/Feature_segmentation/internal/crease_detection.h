@@ -12,6 +12,7 @@
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/cad_tessellation.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
+#include <CGAL/Feature_segmentation/internal/crease_staircase.h>
 #include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/plane_borders.h>
@@ -318,17 +319,19 @@ constexpr double crease_rough_plane_share = 0.2;
 // The creases of the mesh of `idx` (per edge): the edges whose dihedral angle is at
 // least crease_angle on the face normals after at most `filter_iterations` rounds of
 // bilateral filtering (none on a clean mesh; 0: the raw normals), so that noise along
-// the normals neither makes creases in flat parts nor breaks real ones, and that pass
-// the gap test (keep_creases_with_gap), marked 1; on a clean tessellation (raw
+// the normals neither makes creases in flat parts nor breaks real ones (on a heavily
+// noisy mesh also those of the normals filtered along their gradient, and not those that
+// are staircase steps: crease_staircase.h), and that pass the gap test
+// (keep_creases_with_gap), marked 1; on a clean tessellation (raw
 // roughness at most crease_filter_roughness) and if `tangent`, the curvature
 // discontinuities (mark_tangent_discontinuities), marked 2; on a noisy one (raw
 // roughness above Crease_gap::raw_roughness) and if `tangent`, the borders of its planes
 // on the filtered normals (mark_plane_borders), marked 2, and so on any other rough one
 // whose planes hold crease_rough_plane_share of its area or more; a piece of one or two faces
 // (if not clean, of up to crease_noisy_piece_max_faces) that these would cut out keeps
-// its flattest edge (join_isolated_crease_faces). `angle` receives
-// the filtered angles, `clean` whether the tessellation is clean, `cad` whether its
-// crest lines weigh less, as those of a CAD part: is_cad_tessellation if clean; on a
+// its flattest edge (join_isolated_crease_faces). `angle` receives the filtered angles
+// (of a crease of a heavily noisy mesh, the larger of the two filters'), `clean` whether
+// the tessellation is clean, `cad` whether its crest lines weigh less, as those of a CAD part: is_cad_tessellation if clean; on a
 // noisy mesh (raw roughness above Crease_gap::raw_roughness) always, since noise makes
 // crest lines along every cylinder and round every torus, which at the full alpha cut
 // a noisy part's faces (a torus of one face: 4 or 5 patches at 0.1% noise) and a noisy
@@ -387,6 +390,24 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   const bool planar = smooth && has_large_planar_regions(idx, normal, area, diagonal);
   std::vector<char> is_crease(angle.size(), 0);
   for(std::size_t e = 0; e < angle.size(); ++e) is_crease[e] = angle[e] >= crease_angle ? 1 : 0;
+  // On a heavily noisy mesh, the candidates are the edges that bend by crease_angle on
+  // the normals filtered along their gradient, and those of the bilateral filter that
+  // are no staircase step (crease_staircase.h); an edge's angle is the larger of the two.
+  if(!smooth && filtered && raw_roughness >= Crease_staircase::roughness)
+  {
+    const std::vector<double> along = dihedral_angles(
+      idx,
+      filter_face_normals_along_gradient(normal, area, centroid, begin, ring,
+                                         noisy_filter_rounds(raw_roughness, filter_iterations), crease_filter_sigma_r,
+                                         parallel),
+      parallel);
+    const std::vector<char> step = staircase_creases(idx, vpm, is_crease, filtered_normal, centroid);
+    for(std::size_t e = 0; e < angle.size(); ++e)
+    {
+      is_crease[e] = along[e] >= crease_angle || (is_crease[e] && !step[e]) ? 1 : 0;
+      if(is_crease[e]) angle[e] = (std::max)(angle[e], along[e]);
+    }
+  }
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
                         clean ? Crease_gap::strong_angle : 360., planar);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
