@@ -25,19 +25,6 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Surface_mesh<Epick::Point_3> SM;
 namespace I = FS::internal;
 
-// Every vertex moved along `normal` by a deterministic pseudo-random amount, uniform in
-// [-amplitude, amplitude].
-void add_noise(fs_test::Soup& s, const std::vector<std::array<double, 3> >& normal, double amplitude)
-{
-  unsigned long long state = 20170601;
-  for(std::size_t v = 0; v < s.points.size(); ++v)
-  {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    const double u = double(state >> 11) / double(1ULL << 53);
-    for(int k = 0; k < 3; ++k) s.points[v][k] += amplitude * (2 * u - 1) * normal[v][k];
-  }
-}
-
 struct Geometry
 {
   std::vector<Eigen::Vector3d> normal, centroid;
@@ -110,15 +97,7 @@ BOOST_AUTO_TEST_CASE(filter_along_gradient_keeps_a_plane_and_smooths_a_coarse_cy
   // a cylinder of radius 1 and 20 facets round (18 degrees from facet to facet), noise
   // of up to 0.05 along the normals: the bilateral filter gathers the turn into steps
   // far above 18 degrees; along the gradient none reaches the crease angle (20)
-  fs_test::Soup s = fs_test::cylinder(1., 2., 20, 12);
-  std::vector<std::array<double, 3> > normal;
-  for(const auto& p : s.points)
-  {
-    const double r = std::hypot(p[0], p[1]);
-    normal.push_back({ p[0] / r, p[1] / r, 0. });
-  }
-  add_noise(s, normal, 0.05);
-  const SM m = fs_test::to_mesh<SM>(s);
+  const SM m = fs_test::to_mesh<SM>(fs_test::noisy_cylinder(1., 2., 20, 12, 0.05));
   const I::Mesh_indexing<SM> idx(m);
   const Geometry g = geometry_of(idx);
   const std::vector<double> bilateral = I::dihedral_angles(

@@ -213,6 +213,34 @@ inline Soup saddle(double a, int n)
   });
 }
 
+// Every vertex of `s` moved along `normal` (per vertex) by a deterministic pseudo-random
+// amount, uniform in [-amplitude, amplitude] (the same numbers on every platform).
+inline void add_noise_along(Soup& s, const std::vector<std::array<double, 3> >& normal, double amplitude)
+{
+  unsigned long long state = 20170601;
+  for(std::size_t v = 0; v < s.points.size(); ++v)
+  {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double u = double(state >> 11) / double(1ULL << 53);
+    for(int k = 0; k < 3; ++k) s.points[v][k] += amplitude * (2 * u - 1) * normal[v][k];
+  }
+}
+
+// cylinder(r, hgt, n_around, n_along) with every vertex moved along its radial direction
+// by add_noise_along() of `amplitude`.
+inline Soup noisy_cylinder(double r, double hgt, int n_around, int n_along, double amplitude)
+{
+  Soup s = cylinder(r, hgt, n_around, n_along);
+  std::vector<std::array<double, 3> > normal;
+  for(const auto& p : s.points)
+  {
+    const double rho = std::hypot(p[0], p[1]);
+    normal.push_back({ p[0] / rho, p[1] / rho, 0. });
+  }
+  add_noise_along(s, normal, amplitude);
+  return s;
+}
+
 // A square [-a, a]^2 in the plane z = 0.
 inline Soup plane(double a, int n)
 {

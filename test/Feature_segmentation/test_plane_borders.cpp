@@ -68,19 +68,6 @@ double to_tangent_line(double i)
   return (std::min)(length(a, 1. / floor_segments), length(-b, 1. / wall_segments));
 }
 
-// Every vertex moved along the surface's normal by a deterministic pseudo-random amount,
-// uniform in [-amplitude, amplitude].
-void add_noise(fs_test::Soup& s, const std::vector<std::array<double, 3> >& normal, double amplitude)
-{
-  unsigned long long state = 20170601;
-  for(std::size_t v = 0; v < s.points.size(); ++v)
-  {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    const double u = double(state >> 11) / double(1ULL << 53);
-    for(int k = 0; k < 3; ++k) s.points[v][k] += amplitude * (2 * u - 1) * normal[v][k];
-  }
-}
-
 fs_test::Soup noisy_filleted_corner(double amplitude)
 {
   fs_test::Soup s = fs_test::parametric_grid(profile_points - 1, rulings, false, false, [](double u, double v) {
@@ -95,7 +82,7 @@ fs_test::Soup noisy_filleted_corner(double amplitude)
     profile(int(v % profile_points), x, z, nx, nz);
     normal.push_back({ nx, 0., nz });
   }
-  add_noise(s, normal, amplitude);
+  fs_test::add_noise_along(s, normal, amplitude);
   return s;
 }
 
@@ -205,15 +192,7 @@ BOOST_AUTO_TEST_CASE(noisy_cylinder_has_no_plane)
 {
   // radius 1, 64 facets round (5.6 degrees a step), noise of up to 0.6% of the diagonal:
   // regions grown on its filtered normals are strips whose normals turn steadily
-  fs_test::Soup s = fs_test::cylinder(1., 4., 64, 64);
-  std::vector<std::array<double, 3> > normal;
-  for(const auto& p : s.points)
-  {
-    const double r = std::hypot(p[0], p[1]);
-    normal.push_back({ p[0] / r, p[1] / r, 0. });
-  }
-  add_noise(s, normal, 0.027);
-  const SM m = fs_test::to_mesh<SM>(s);
+  const SM m = fs_test::to_mesh<SM>(fs_test::noisy_cylinder(1., 4., 64, 64, 0.027));
   bool noisy = false;
   const std::vector<char> marks = crease_marks(m, noisy);
   BOOST_REQUIRE(noisy);
@@ -223,7 +202,7 @@ BOOST_AUTO_TEST_CASE(noisy_cylinder_has_no_plane)
 BOOST_AUTO_TEST_CASE(noisy_square_is_one_plane_without_border)
 {
   fs_test::Soup s = fs_test::plane(1., 40);
-  add_noise(s, std::vector<std::array<double, 3> >(s.points.size(), std::array<double, 3>{ 0., 0., 1. }), 0.01);
+  fs_test::add_noise_along(s, std::vector<std::array<double, 3> >(s.points.size(), std::array<double, 3>{ 0., 0., 1. }), 0.01);
   const SM m = fs_test::to_mesh<SM>(s);
   bool noisy = false;
   const std::vector<char> marks = crease_marks(m, noisy);

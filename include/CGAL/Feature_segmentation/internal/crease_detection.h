@@ -195,19 +195,9 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
 {
   if(max_iterations <= 0 || initial_roughness <= stop_roughness) return normal;
   const std::size_t nf = normal.size();
-  double sum = 0;
-  std::size_t count = 0;
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      if(ring[i] != f) { sum += (centroid[f] - centroid[ring[i]]).norm(); ++count; }
-  const double sigma_s = count > 0 ? sum / double(count) : 1.;
-  const double inv_s = sigma_s > 0 ? 1. / (2 * sigma_s * sigma_s) : 0.;
   const double inv_r = 1. / (2 * sigma_r * sigma_r);
-  // the area times the spatial Gaussian of every pair, fixed over the rounds
-  std::vector<double> spatial(ring.size());
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
+  double spacing = 0;
+  const std::vector<double> spatial = normal_filter_spatial_weights(area, centroid, begin, ring, spacing);
   // the range Gaussian as a table over |n_f - n_g|^2 in [0, 4], read with linear
   // interpolation (relative error below 4e-6; the exponential was most of the time)
   constexpr std::size_t table_size = 4096;

@@ -54,6 +54,31 @@ struct Crease_staircase
   static constexpr double reach = 4.;
 };
 
+// The spatial weights of the normal filters (filter_face_normals(),
+// filter_face_normals_along_gradient()), fixed over their rounds: for every pair of a
+// face f and a face g of its ring (`begin`, `ring`: CSR), g's area times a Gaussian of
+// their centroids' distance whose sigma, `spacing`, is the mean distance between the
+// centroids of such pairs (1 without any).
+inline std::vector<double> normal_filter_spatial_weights(const std::vector<double>& area,
+                                                         const std::vector<Eigen::Vector3d>& centroid,
+                                                         const std::vector<std::uint32_t>& begin,
+                                                         const std::vector<std::uint32_t>& ring, double& spacing)
+{
+  const std::size_t nf = area.size();
+  double sum = 0;
+  std::size_t count = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+      if(ring[i] != f) { sum += (centroid[f] - centroid[ring[i]]).norm(); ++count; }
+  spacing = count > 0 ? sum / double(count) : 1.;
+  const double inv_s = spacing > 0 ? 1. / (2 * spacing * spacing) : 0.;
+  std::vector<double> spatial(ring.size());
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+      spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
+  return spatial;
+}
+
 // Face normals filtered as filter_face_normals() does (`rounds` rounds, range parameter
 // `sigma_r`, the same spatial Gaussian), but along their gradient: each round, face f
 // fits the gradient G of the normals over its ring (n_g - n_f ~ G d_g, d_g the
@@ -70,18 +95,9 @@ inline std::vector<Eigen::Vector3d> filter_face_normals_along_gradient(const std
                                                                        int rounds, double sigma_r, bool parallel = false)
 {
   const std::size_t nf = normal.size();
-  double sum = 0;
-  std::size_t count = 0;
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      if(ring[i] != f) { sum += (centroid[f] - centroid[ring[i]]).norm(); ++count; }
-  const double spacing = count > 0 ? sum / double(count) : 1.;
-  const double inv_s = spacing > 0 ? 1. / (2 * spacing * spacing) : 0.;
   const double inv_r = 1. / (2 * sigma_r * sigma_r);
-  std::vector<double> spatial(ring.size());
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
+  double spacing = 0;
+  const std::vector<double> spatial = normal_filter_spatial_weights(area, centroid, begin, ring, spacing);
   std::vector<Eigen::Vector3d> n = normal, next(nf);
   for(int it = 0; it < rounds; ++it)
   {
