@@ -391,7 +391,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
                                          noisy_filter_rounds(raw_roughness, filter_iterations), crease_filter_sigma_r,
                                          parallel),
       parallel);
-    const std::vector<char> step = staircase_creases(idx, vpm, is_crease, filtered_normal, centroid);
+    const std::vector<char> step = staircase_creases(idx, vpm, is_crease, filtered_normal, centroid, parallel);
     for(std::size_t e = 0; e < angle.size(); ++e)
     {
       is_crease[e] = along[e] >= crease_angle || (is_crease[e] && !step[e]) ? 1 : 0;

@@ -154,76 +154,104 @@ inline std::vector<Eigen::Vector3d> filter_face_normals_along_gradient(const std
 // Per edge of the mesh of `idx`, whether it is a candidate (nonzero in `candidate`) with
 // another candidate nearly parallel to it on both sides (Crease_staircase): the
 // candidates met on the faces reached from its two faces across edges, staying within
-// `reach` mean edge lengths across it and two along it; `normal`: unit face normals (the
-// across direction is the edge's direction times the sum of its faces' normals),
-// `centroid`: the faces'.
+// `reach` mean edge lengths across it and two along it (a search ends once both sides
+// have one); `normal`: unit face normals (the across direction is the edge's direction
+// times the sum of its faces' normals), `centroid`: the faces'; the candidates by TBB's
+// threads if `parallel`.
 template <typename TriangleMesh, typename VPM>
 std::vector<char> staircase_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, const std::vector<char>& candidate,
                                     const std::vector<Eigen::Vector3d>& normal,
-                                    const std::vector<Eigen::Vector3d>& centroid)
+                                    const std::vector<Eigen::Vector3d>& centroid, bool parallel = false)
 {
   typedef Crease_staircase Limits;
+  typedef std::uint32_t Id; // detect_creases() has checked that 3 ids per face fit
   const TriangleMesh& tm = idx.mesh();
   const std::size_t ne = idx.number_of_edges(), nf = idx.number_of_faces();
-  std::vector<Eigen::Vector3d> from(ne), to(ne);
+  const Id none = Id(-1);
+  // every edge's midpoint and unit direction, every face's edges and the faces across them
+  std::vector<Eigen::Vector3d> middle(ne), direction(ne);
   double sum = 0;
   for(std::size_t e = 0; e < ne; ++e)
   {
     const auto h = halfedge(idx.edge_at(e), tm);
     const auto& p = get(vpm, source(h, tm));
     const auto& q = get(vpm, target(h, tm));
-    from[e] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    to[e] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    sum += (to[e] - from[e]).norm();
+    const Eigen::Vector3d a(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const Eigen::Vector3d b(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+    middle[e] = 0.5 * (a + b);
+    direction[e] = b - a;
+    const double len = direction[e].norm();
+    sum += len;
+    if(len > 0) direction[e] /= len;
+  }
+  std::vector<Id> face_edge(3 * nf, none), across(3 * nf, none);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      if(k == 3) break;
+      const std::size_t g = idx.face_id(opposite(h, tm));
+      face_edge[3 * f + k] = Id(idx.edge_id(h));
+      across[3 * f + k] = g == idx.npos ? none : Id(g);
+      ++k;
+    }
   }
   const double w = ne > 0 ? sum / double(ne) : 0.;
-  std::vector<char> out(ne, 0), mark(nf, 0);
-  std::vector<std::size_t> stack, seen;
+  std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < ne; ++e)
-  {
-    if(!candidate[e]) continue;
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
-    if(f == idx.npos || g == idx.npos) continue;
-    const Eigen::Vector3d m = 0.5 * (from[e] + to[e]);
-    Eigen::Vector3d t = to[e] - from[e];
-    const Eigen::Vector3d up = normal[f] + normal[g];
-    if(!(t.norm() > 0) || !(up.norm() > 0)) continue;
-    t.normalize();
-    Eigen::Vector3d across = t.cross(up);
-    if(!(across.norm() > 0)) continue;
-    across.normalize();
-    bool side[2] = { false, false };
-    stack.assign({ f, g });
-    seen = stack;
-    mark[f] = mark[g] = 1;
-    while(!stack.empty())
+    if(candidate[e]) candidates.push_back(e);
+  std::vector<char> out(ne, 0);
+  // each candidate on its own (its search reads `candidate` only): the same at any
+  // thread count
+  for_each_range(candidates.size(), parallel, 64, [&](std::size_t first, std::size_t last) {
+    std::vector<char> mark(nf, 0);
+    std::vector<Id> stack, seen;
+    for(std::size_t c = first; c < last; ++c)
     {
-      const std::size_t x = stack.back();
-      stack.pop_back();
-      for(auto hx : CGAL::halfedges_around_face(halfedge(idx.face_at(x), tm), tm))
+      const std::size_t e = candidates[c];
+      const auto h = halfedge(idx.edge_at(e), tm);
+      const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
+      if(f == idx.npos || g == idx.npos) continue;
+      const Eigen::Vector3d& m = middle[e];
+      const Eigen::Vector3d& t = direction[e];
+      const Eigen::Vector3d up = normal[f] + normal[g];
+      if(!(t.squaredNorm() > 0) || !(up.norm() > 0)) continue;
+      Eigen::Vector3d side_direction = t.cross(up);
+      if(!(side_direction.norm() > 0)) continue;
+      side_direction.normalize();
+      bool side[2] = { false, false };
+      stack.assign({ Id(f), Id(g) });
+      seen = stack;
+      mark[f] = mark[g] = 1;
+      while(!stack.empty() && !(side[0] && side[1]))
       {
-        const std::size_t e2 = idx.edge_id(hx);
-        if(e2 != e && candidate[e2])
+        const Id x = stack.back();
+        stack.pop_back();
+        for(int k = 0; k < 3; ++k)
         {
-          const Eigen::Vector3d d = 0.5 * (from[e2] + to[e2]) - m;
-          const double s = d.dot(across);
-          if(std::abs((to[e2] - from[e2]).normalized().dot(t)) >= Limits::parallel_cosine && std::abs(s) >= 0.5 * w &&
-             std::abs(d.dot(t)) <= 1.5 * w)
-            side[s > 0 ? 0 : 1] = true;
+          const Id e2 = face_edge[3 * x + k];
+          if(e2 != e && candidate[e2])
+          {
+            const Eigen::Vector3d d = middle[e2] - m;
+            const double s = d.dot(side_direction);
+            if(std::abs(direction[e2].dot(t)) >= Limits::parallel_cosine && std::abs(s) >= 0.5 * w &&
+               std::abs(d.dot(t)) <= 1.5 * w)
+              side[s > 0 ? 0 : 1] = true;
+          }
+          const Id y = across[3 * x + k];
+          if(y == none || mark[y]) continue;
+          const Eigen::Vector3d d = centroid[y] - m;
+          if(std::abs(d.dot(side_direction)) > Limits::reach * w || std::abs(d.dot(t)) > 2 * w) continue;
+          mark[y] = 1;
+          seen.push_back(y);
+          stack.push_back(y);
         }
-        const std::size_t y = idx.face_id(opposite(hx, tm));
-        if(y == idx.npos || mark[y]) continue;
-        const Eigen::Vector3d d = centroid[y] - m;
-        if(std::abs(d.dot(across)) > Limits::reach * w || std::abs(d.dot(t)) > 2 * w) continue;
-        mark[y] = 1;
-        seen.push_back(y);
-        stack.push_back(y);
       }
+      for(Id x : seen) mark[x] = 0;
+      out[e] = side[0] && side[1];
     }
-    for(std::size_t x : seen) mark[x] = 0;
-    out[e] = side[0] && side[1];
-  }
+  });
   return out;
 }
 
