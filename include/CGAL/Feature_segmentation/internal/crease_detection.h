@@ -358,8 +358,10 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   // the bounding box's diagonal, for the rules of all but noisy tessellations (and the
   // planes of noisy ones)
   const bool smooth = raw_roughness <= Crease_gap::raw_roughness;
-  const bool noisy_planes = !smooth && tangent && filtered;
-  const bool rough_planes = smooth && !clean && tangent && filtered;
+  // the plane borders: on every rough mesh, those of a mesh that is not noisy only if
+  // its planes hold crease_rough_plane_share of its area
+  const bool planes = !clean && tangent && filtered;
+  const bool noisy_planes = !smooth && planes;
   double diagonal = 0.;
   if(smooth || noisy_planes)
   {
@@ -401,9 +403,8 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
                         clean ? Crease_gap::strong_angle : 360., planar);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
-  if(noisy_planes) mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease);
-  else if(rough_planes)
-    mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, crease_rough_plane_share);
+  if(planes)
+    mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, smooth ? crease_rough_plane_share : 0.);
   if(clean) join_isolated_crease_faces(idx, angle, is_crease);
   else join_isolated_crease_faces(idx, angle, is_crease, crease_noisy_piece_max_faces, 180.);
   // a noisy mesh's crest lines weigh less whatever its creases (see above)
