@@ -1,6 +1,7 @@
-// The rules of the crease cut: when normals are filtered and how far, the crease angle's
-// checks, long thin parts, the weight of crest lines on CAD parts, and faces that the
-// creases isolate. Exact answers on boxes and rods whose faces are known.
+// The rules of the crease cut: when normals are filtered and how far (and the filters'
+// range Gaussian), the crease angle's checks, long thin parts, the weight of crest
+// lines on CAD parts, and faces that the creases isolate. Exact answers on boxes and rods
+// whose faces are known.
 #include <boost/test/unit_test.hpp>
 
 #include "crease_meshes.h"
@@ -112,6 +113,26 @@ BOOST_AUTO_TEST_CASE(filter_stops_after_the_round_that_makes_the_normals_smooth)
   const auto fewer = FS::internal::filter_face_normals(normal, r0, area, centroid, begin, ring, rounds - 1, 0.3, 0.);
   BOOST_TEST((stopped == exact));
   BOOST_TEST((stopped != fewer));
+}
+
+// The range Gaussian of both normal filters: read from its table within 4e-6 of the
+// exponential over the differences of unit normals (|n_f - n_g|^2 in [0, 4]), the
+// exponential itself beyond (the gradient filter's carried normals), 1 at 0.
+BOOST_AUTO_TEST_CASE(range_gaussian_matches_the_exponential)
+{
+  const double sigma_r = 0.3, inv = 1. / (2 * sigma_r * sigma_r);
+  const FS::internal::Range_gaussian range(sigma_r);
+  BOOST_TEST(range(0.) == 1.);
+  double worst = 0.;
+  for(int k = 0; k <= 40000; ++k)
+  {
+    const double d2 = 4. * k / 40000. + (k % 7) * 1e-6;
+    worst = (std::max)(worst, std::abs(range(d2) / std::exp(-d2 * inv) - 1.));
+  }
+  BOOST_TEST(worst < 4e-6);
+  BOOST_TEST(worst > 0.); // a table, not the exponential
+  for(double d2 : {4., 4.5, 9.})
+    BOOST_TEST(range(d2) == std::exp(-d2 * inv));
 }
 
 BOOST_AUTO_TEST_CASE(bad_crease_angle_is_refused)

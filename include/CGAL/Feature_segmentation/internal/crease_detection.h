@@ -14,6 +14,7 @@
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/crease_staircase.h>
 #include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
+#include <CGAL/Feature_segmentation/internal/normal_filters.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/plane_borders.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
@@ -176,76 +177,6 @@ inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std:
   });
   std::nth_element(r.begin(), r.begin() + nf / 2, r.end());
   return std::sqrt(r[nf / 2]);
-}
-
-// Face normals filtered so that noise fades and creases stay sharp: bilateral normal
-// filtering (Zheng, Fu, Au, Tai, IEEE TVCG 2011) over the faces sharing a vertex, with
-// a spatial Gaussian of the mean distance between neighbouring centroids and a range
-// Gaussian of sigma_r on the difference of normals, at most max_iterations rounds,
-// stopping once the roughness (normal_roughness; `initial_roughness` before the first
-// round) is at most `stop_roughness`; with stop_roughness 0 every round runs.
-inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen::Vector3d>& normal,
-                                                        double initial_roughness,
-                                                        const std::vector<double>& area,
-                                                        const std::vector<Eigen::Vector3d>& centroid,
-                                                        const std::vector<std::uint32_t>& begin,
-                                                        const std::vector<std::uint32_t>& ring,
-                                                        int max_iterations, double sigma_r, double stop_roughness,
-                                                        bool parallel = false)
-{
-  if(max_iterations <= 0 || initial_roughness <= stop_roughness) return normal;
-  const std::size_t nf = normal.size();
-  const double inv_r = 1. / (2 * sigma_r * sigma_r);
-  double spacing = 0;
-  const std::vector<double> spatial = normal_filter_spatial_weights(area, centroid, begin, ring, spacing);
-  // the range Gaussian as a table over |n_f - n_g|^2 in [0, 4], read with linear
-  // interpolation (relative error below 4e-6; the exponential was most of the time)
-  constexpr std::size_t table_size = 4096;
-  std::vector<double> range(table_size + 2);
-  for(std::size_t k = 0; k < range.size(); ++k) range[k] = std::exp(-4. * double(k) / double(table_size) * inv_r);
-  const double to_table = double(table_size) / 4.;
-  std::vector<Eigen::Vector3d> n = normal, next(nf);
-  // With a stop, every round also measures the roughness of the normals it reads
-  // (the smallest difference it meets per face, as normal_roughness does): once that is
-  // at most stop_roughness, its output is dropped and its input returned, the result of
-  // the same rounds as measuring after each round, without a second pass over the pairs.
-  std::vector<double> least(stop_roughness > 0 ? nf : 0);
-  // one round on the faces [first, last): each face reads the normals of the previous
-  // round only, so the faces of a round may be filtered by several threads
-  auto filter_range = [&](std::size_t first, std::size_t last) {
-    for(std::size_t f = first; f < last; ++f)
-    {
-      double closest = 4.;
-      Eigen::Vector3d m = Eigen::Vector3d::Zero();
-      for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      {
-        const std::size_t g = ring[i];
-        if(n[g].squaredNorm() == 0) continue;
-        const double d2 = (std::min)(4., (n[f] - n[g]).squaredNorm());
-        if(g != f) closest = (std::min)(closest, d2);
-        const double x = d2 * to_table;
-        const std::size_t k = static_cast<std::size_t>(x);
-        const double t = x - double(k);
-        m += spatial[i] * ((1 - t) * range[k] + t * range[k + 1]) * n[g];
-      }
-      if(!least.empty()) least[f] = closest;
-      const double len = m.norm();
-      next[f] = n[f].squaredNorm() > 0 && len > 0 && std::isfinite(len) ? Eigen::Vector3d(m / len) : n[f];
-    }
-  };
-  for(int it = 0; it < max_iterations; ++it)
-  {
-    for_each_range(nf, parallel, 1024, filter_range);
-    if(it > 0 && !least.empty())
-    {
-      // the roughness of n, the output of round it - 1 (round 0 reads the input, whose
-      // roughness initial_roughness is above the stop)
-      std::nth_element(least.begin(), least.begin() + std::ptrdiff_t(nf / 2), least.end());
-      if(std::sqrt(least[nf / 2]) <= stop_roughness) break;
-    }
-    n.swap(next);
-  }
-  return n;
 }
 
 // The angle between the normals of the two faces of every edge, in degrees (0 for a

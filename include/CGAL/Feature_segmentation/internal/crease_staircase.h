@@ -4,7 +4,8 @@
 // whose facets bend by nearly the crease angle (a torus or tube some twenty facets
 // round) into flat strips and steps far steeper than the crease angle, which no angle
 // test can tell from creases. Two views of the same normals tell them apart:
-// - the normals filtered along their gradient (filter_face_normals_along_gradient()):
+// - the normals filtered along their gradient (filter_face_normals_along_gradient(),
+//   normal_filters.h):
 //   each face carries its neighbours' normals back along the gradient it fits over its
 //   ring before averaging them, so a steady turn stays smooth and its steps do not form;
 //   but a moderate crease that turns the way its curved side curves (a barrel meeting
@@ -36,7 +37,8 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// The constants of the gradient filter and the staircase test, chosen on the 30
+// The constants of the staircase rule (and of the gradient filter: Gradient_filter in
+// normal_filters.h), chosen on the 30
 // development parts and the generated ones at 0.1% and 0.3% noise (manual, Creases).
 struct Crease_staircase
 {
@@ -44,112 +46,11 @@ struct Crease_staircase
   // noise (0.3% of the diagonal: 0.1 to 0.22); from 0 on, light noise (0.035 to 0.1)
   // loses narrow faces (the knurls of CAD part 30419 at 0.1% noise: F 0.98 -> 0.90).
   static constexpr double roughness = 0.08;
-  // The gradient fit's ridge, as a share of the ring's spatial weights (in coordinates
-  // of centroid spacings), and the most the gradient turns the normal per spacing.
-  static constexpr double ridge = 0.03;
-  static constexpr double gradient_cap = 0.3;
   // A step's neighbours: candidates whose direction is within acos(0.85) (32 degrees)
   // of it, at 0.5 to `reach` mean edge lengths across it and within 1.5 along it.
   static constexpr double parallel_cosine = 0.85;
   static constexpr double reach = 4.;
 };
-
-// The spatial weights of the normal filters (filter_face_normals(),
-// filter_face_normals_along_gradient()), fixed over their rounds: for every pair of a
-// face f and a face g of its ring (`begin`, `ring`: CSR), g's area times a Gaussian of
-// their centroids' distance whose sigma, `spacing`, is the mean distance between the
-// centroids of such pairs (1 without any).
-inline std::vector<double> normal_filter_spatial_weights(const std::vector<double>& area,
-                                                         const std::vector<Eigen::Vector3d>& centroid,
-                                                         const std::vector<std::uint32_t>& begin,
-                                                         const std::vector<std::uint32_t>& ring, double& spacing)
-{
-  const std::size_t nf = area.size();
-  double sum = 0;
-  std::size_t count = 0;
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      if(ring[i] != f) { sum += (centroid[f] - centroid[ring[i]]).norm(); ++count; }
-  spacing = count > 0 ? sum / double(count) : 1.;
-  const double inv_s = spacing > 0 ? 1. / (2 * spacing * spacing) : 0.;
-  std::vector<double> spatial(ring.size());
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-      spatial[i] = area[ring[i]] * std::exp(-(centroid[f] - centroid[ring[i]]).squaredNorm() * inv_s);
-  return spatial;
-}
-
-// Face normals filtered as filter_face_normals() does (`rounds` rounds, range parameter
-// `sigma_r`, the same spatial Gaussian), but along their gradient: each round, face f
-// fits the gradient G of the normals over its ring (n_g - n_f ~ G d_g, d_g the
-// centroid offset in f's tangent plane in units of the mean centroid spacing, weighted
-// by the bilateral weights, with the ridge Crease_staircase::ridge and the norm of G at
-// most Crease_staircase::gradient_cap), then averages the carried normals n_g - G d_g
-// with the spatial and range weights, the range Gaussian on n_g - G d_g - n_f. Each face
-// reads the previous round only: the same result at any thread count.
-inline std::vector<Eigen::Vector3d> filter_face_normals_along_gradient(const std::vector<Eigen::Vector3d>& normal,
-                                                                       const std::vector<double>& area,
-                                                                       const std::vector<Eigen::Vector3d>& centroid,
-                                                                       const std::vector<std::uint32_t>& begin,
-                                                                       const std::vector<std::uint32_t>& ring,
-                                                                       int rounds, double sigma_r, bool parallel = false)
-{
-  const std::size_t nf = normal.size();
-  const double inv_r = 1. / (2 * sigma_r * sigma_r);
-  double spacing = 0;
-  const std::vector<double> spatial = normal_filter_spatial_weights(area, centroid, begin, ring, spacing);
-  std::vector<Eigen::Vector3d> n = normal, next(nf);
-  for(int it = 0; it < rounds; ++it)
-  {
-    for_each_range(nf, parallel, 1024, [&](std::size_t first, std::size_t last) {
-      for(std::size_t f = first; f < last; ++f)
-      {
-        if(n[f].squaredNorm() == 0) { next[f] = n[f]; continue; }
-        // f's tangent frame
-        const Eigen::Vector3d& nf0 = n[f];
-        Eigen::Vector3d u = std::abs(nf0.x()) < 0.9 ? Eigen::Vector3d::UnitX().cross(nf0)
-                                                     : Eigen::Vector3d::UnitY().cross(nf0);
-        u.normalize();
-        const Eigen::Vector3d v = nf0.cross(u);
-        auto offset = [&](std::size_t g) {
-          const Eigen::Vector3d d = centroid[g] - centroid[f];
-          return Eigen::Vector2d(d.dot(u) / spacing, d.dot(v) / spacing);
-        };
-        // the gradient, by weighted least squares with a ridge
-        Eigen::Matrix2d dd = Eigen::Matrix2d::Zero();
-        Eigen::Matrix<double, 3, 2> nd = Eigen::Matrix<double, 3, 2>::Zero();
-        double weights = 0;
-        for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-        {
-          const std::size_t g = ring[i];
-          weights += spatial[i];
-          if(g == f || n[g].squaredNorm() == 0) continue;
-          const double w = spatial[i] * std::exp(-(n[f] - n[g]).squaredNorm() * inv_r);
-          const Eigen::Vector2d d = offset(g);
-          dd += w * d * d.transpose();
-          nd += w * (n[g] - n[f]) * d.transpose();
-        }
-        dd += Crease_staircase::ridge * weights * Eigen::Matrix2d::Identity();
-        Eigen::Matrix<double, 3, 2> gradient = nd * dd.inverse();
-        const double norm = gradient.norm();
-        if(norm > Crease_staircase::gradient_cap) gradient *= Crease_staircase::gradient_cap / norm;
-        // the carried normals, averaged
-        Eigen::Vector3d m = Eigen::Vector3d::Zero();
-        for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
-        {
-          const std::size_t g = ring[i];
-          if(n[g].squaredNorm() == 0) continue;
-          const Eigen::Vector3d carried = n[g] - gradient * offset(g);
-          m += spatial[i] * std::exp(-(carried - n[f]).squaredNorm() * inv_r) * carried;
-        }
-        const double len = m.norm();
-        next[f] = len > 0 && std::isfinite(len) ? Eigen::Vector3d(m / len) : n[f];
-      }
-    });
-    n.swap(next);
-  }
-  return n;
-}
 
 // Per edge of the mesh of `idx`, whether it is a candidate (nonzero in `candidate`) with
 // another candidate nearly parallel to it on both sides (Crease_staircase): the
