@@ -35,9 +35,9 @@ struct Gradient_filter
 
 // The range Gaussian exp(-d2 / (2 sigma_r^2)) of a squared difference d2 of normals,
 // read from a table over [0, 4] (the range of unit normals) with linear interpolation,
-// relative error below 4e-6 for sigma_r = 0.3; beyond 4 (the carried normals of the
-// gradient filter, which are not unit) computed. The exponential was most of the filters'
-// time.
+// relative error below 4e-6 for sigma_r = 0.3 (computing the exponential per pair
+// would be most of the filters' time); beyond 4 (the carried normals of the gradient
+// filter, which are not unit) computed.
 class Range_gaussian
 {
 public:
