@@ -155,6 +155,31 @@ private:
   std::optional<Numbering<face_descriptor, FIMap> > m_faces;
 };
 
+// Per face f of the mesh of `idx` (a triangle mesh), its three edges and the faces across
+// them in the order of halfedges_around_face: edge[3 f + k] and across[3 f + k] (`none`
+// across a border), as ids of type Id.
+template <typename TriangleMesh, typename Id>
+void face_edges_and_neighbours(const Mesh_indexing<TriangleMesh>& idx, Id none, std::vector<Id>& edge,
+                               std::vector<Id>& across)
+{
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nf = idx.number_of_faces();
+  edge.assign(3 * nf, none);
+  across.assign(3 * nf, none);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
+    {
+      if(k == 3) break;
+      const std::size_t g = idx.face_id(opposite(h, tm));
+      edge[3 * f + k] = Id(idx.edge_id(h));
+      across[3 * f + k] = g == idx.npos ? none : Id(g);
+      ++k;
+    }
+  }
+}
+
 } // namespace internal
 } // namespace Feature_segmentation
 } // namespace CGAL

@@ -243,21 +243,22 @@ constexpr double crease_rough_plane_share = 0.2;
 // the normals neither makes creases in flat parts nor breaks real ones (on a heavily
 // noisy mesh also those of the normals filtered along their gradient, and not those that
 // are staircase steps: crease_staircase.h), and that pass the gap test
-// (keep_creases_with_gap), marked 1; on a clean tessellation (raw
-// roughness at most crease_filter_roughness) and if `tangent`, the curvature
-// discontinuities (mark_tangent_discontinuities), marked 2; on a noisy one (raw
-// roughness above Crease_gap::raw_roughness) and if `tangent`, the borders of its planes
-// on the filtered normals (mark_plane_borders), marked 2, and so on any other rough one
-// whose planes hold crease_rough_plane_share of its area or more; a piece of one or two faces
-// (if not clean, of up to crease_noisy_piece_max_faces) that these would cut out keeps
-// its flattest edge (join_isolated_crease_faces). `angle` receives the filtered angles
-// (of a crease of a heavily noisy mesh, the larger of the two filters'), `clean` whether
-// the tessellation is clean, `cad` whether its crest lines weigh less, as those of a CAD part: is_cad_tessellation if clean; on a
-// noisy mesh (raw roughness above Crease_gap::raw_roughness) always, since noise makes
-// crest lines along every cylinder and round every torus, which at the full alpha cut
-// a noisy part's faces (a torus of one face: 4 or 5 patches at 0.1% noise) and a noisy
-// smooth model alike (rockerarm: 14 patches clean, 46 at 0.1% noise with them at the full
-// alpha, 15 weaker); else (a smooth model) creases_cut_into_pieces.
+// (keep_creases_with_gap), marked 1; on a clean tessellation (raw roughness at most
+// crease_filter_roughness) and if `tangent`, the curvature discontinuities
+// (mark_tangent_discontinuities), marked 2; on a noisy one (raw roughness above
+// Crease_gap::raw_roughness) and if `tangent`, the borders of its planes on the filtered
+// normals (mark_plane_borders), marked 2, and so on any other rough one whose planes
+// hold crease_rough_plane_share of its area or more; a piece of one or two faces (if
+// not clean, of up to crease_noisy_piece_max_faces) that these would cut out keeps its
+// flattest edge (join_isolated_crease_faces). `angle` receives the filtered angles (of a
+// crease of a heavily noisy mesh, the larger of the two filters'), `clean` whether the
+// tessellation is clean, `cad` whether its crest lines weigh less, as those of a CAD
+// part: is_cad_tessellation if clean; on a noisy mesh (raw roughness above
+// Crease_gap::raw_roughness) always, since noise makes crest lines along every cylinder
+// and round every torus, which at the full alpha cut a noisy part's faces (a torus of
+// one face: 4 or 5 patches at 0.1% noise) and a noisy smooth model alike (rockerarm: 14
+// patches clean, 46 at 0.1% noise with them at the full alpha, 15 weaker); else (a
+// smooth model) creases_cut_into_pieces.
 template <typename TriangleMesh, typename VPM>
 std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm, double crease_angle,
                                  int filter_iterations, bool tangent, std::vector<double>& angle, bool& clean,
@@ -277,7 +278,8 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   // noisy mesh gets the rounds of noisy_filter_rounds without a stop: stopping when the
   // median face is smooth leaves the faces tilted far from all their neighbours (which
   // the range Gaussian protects) as spurious creases.
-  const double stop = raw_roughness <= Crease_gap::raw_roughness ? crease_filter_roughness : 0.;
+  const bool smooth = raw_roughness <= Crease_gap::raw_roughness;
+  const double stop = smooth ? crease_filter_roughness : 0.;
   const bool filtered = raw_roughness > crease_filter_roughness && filter_iterations > 0;
   std::vector<Eigen::Vector3d> filtered_normal;
   if(filtered)
@@ -286,15 +288,13 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
                                           : noisy_filter_rounds(raw_roughness, filter_iterations),
                                  crease_filter_sigma_r, stop, parallel);
   angle = filtered ? dihedral_angles(idx, filtered_normal, parallel) : raw;
-  // the bounding box's diagonal, for the rules of all but noisy tessellations (and the
-  // planes of noisy ones)
-  const bool smooth = raw_roughness <= Crease_gap::raw_roughness;
   // the plane borders: on every rough mesh, those of a mesh that is not noisy only if
   // its planes hold crease_rough_plane_share of its area
   const bool planes = !clean && tangent && filtered;
-  const bool noisy_planes = !smooth && planes;
+  // the bounding box's diagonal, for the rules of all but noisy tessellations (and the
+  // planes of noisy ones)
   double diagonal = 0.;
-  if(smooth || noisy_planes)
+  if(smooth || planes)
   {
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
     for(auto v : vertices(idx.mesh()))

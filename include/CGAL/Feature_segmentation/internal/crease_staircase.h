@@ -37,9 +37,9 @@ namespace CGAL {
 namespace Feature_segmentation {
 namespace internal {
 
-// The constants of the staircase rule (and of the gradient filter: Gradient_filter in
-// normal_filters.h), chosen on the 30
-// development parts and the generated ones at 0.1% and 0.3% noise (manual, Creases).
+// The constants of the staircase rule (those of the gradient filter are Gradient_filter
+// in normal_filters.h), chosen on the 30 development parts and the generated ones at
+// 0.1% and 0.3% noise (manual, Creases).
 struct Crease_staircase
 {
   // The raw roughness (normal_roughness) from which a noisy mesh gets the rule: heavy
@@ -85,19 +85,8 @@ std::vector<char> staircase_creases(const Mesh_indexing<TriangleMesh>& idx, VPM 
     sum += len;
     if(len > 0) direction[e] /= len;
   }
-  std::vector<Id> face_edge(3 * nf, none), across(3 * nf, none);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-    {
-      if(k == 3) break;
-      const std::size_t g = idx.face_id(opposite(h, tm));
-      face_edge[3 * f + k] = Id(idx.edge_id(h));
-      across[3 * f + k] = g == idx.npos ? none : Id(g);
-      ++k;
-    }
-  }
+  std::vector<Id> face_edge, across;
+  face_edges_and_neighbours(idx, none, face_edge, across);
   const double w = ne > 0 ? sum / double(ne) : 0.;
   std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < ne; ++e)

@@ -75,7 +75,6 @@ double mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vec
                           double diagonal, std::vector<char>& is_crease, double least_share = 0.)
 {
   typedef Plane_thresholds Limits;
-  const TriangleMesh& tm = idx.mesh();
   // 32-bit face and edge ids (detect_creases() has checked that 3 ids per face fit)
   typedef std::uint32_t Id;
   const std::size_t nf = idx.number_of_faces();
@@ -86,19 +85,10 @@ double mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vec
   auto valid = [&](std::size_t f) { return normal[f].squaredNorm() > 0; };
 
   // the faces across each face's three edges (none across a border or a crease)
-  std::vector<Id> across(3 * nf, none), across_edge(3 * nf, none);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    int k = 0;
-    for(auto h : CGAL::halfedges_around_face(halfedge(idx.face_at(f), tm), tm))
-    {
-      if(k == 3) break;
-      const std::size_t e = idx.edge_id(h), g = idx.face_id(opposite(h, tm));
-      across_edge[3 * f + k] = Id(e);
-      if(g != idx.npos && !is_crease[e]) across[3 * f + k] = Id(g);
-      ++k;
-    }
-  }
+  std::vector<Id> across_edge, across;
+  face_edges_and_neighbours(idx, none, across_edge, across);
+  for(std::size_t i = 0; i < across.size(); ++i)
+    if(is_crease[across_edge[i]]) across[i] = none;
   // the seeds: faces by their largest bend (1 - cos) to a face across an edge
   std::vector<double> bend(nf, 2.);
   for(std::size_t f = 0; f < nf; ++f)
