@@ -2,7 +2,9 @@
 // candidate lines of a flat grid (a line with parallel candidates on both sides within
 // four edge lengths is a step, the outer lines and a lone line are not), and the normal
 // filter along the gradient on a plane (exact) and on a noisy coarse cylinder (no steps
-// where the bilateral filter makes them).
+// where the bilateral filter makes them); the creases of the narrow filter
+// (crease_narrow_filter.h): their lines' sizes on a grid (exact), and on a lightly noisy
+// turned surface the cone's crease of 26.6 degrees, which the bilateral filter blurs.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
@@ -109,6 +111,121 @@ BOOST_AUTO_TEST_CASE(filter_along_gradient_keeps_a_plane_and_smooths_a_coarse_cy
   BOOST_TEST_MESSAGE("largest filtered angle: bilateral " << most_bilateral << ", along the gradient " << most_along);
   BOOST_TEST(most_bilateral > 30.);
   BOOST_TEST(most_along < 20.);
+}
+
+BOOST_AUTO_TEST_CASE(crease_lines_are_the_candidates_sharing_vertices)
+{
+  // a 10 x 10 grid over [-1, 1]^2 (cells of 0.2): the line y = 0 (10 edges) and the line
+  // x = 0 from y = 0.2 up (4 edges, not touching y = 0) as one L with the edge of
+  // x = 0 from y = 0 to 0.2 (15 edges); and 3 edges of the line y = -0.6 alone
+  const SM m = fs_test::to_mesh<SM>(fs_test::plane(1., 10));
+  const I::Mesh_indexing<SM> idx(m);
+  std::vector<char> candidate(idx.number_of_edges(), 0);
+  std::vector<int> kind(idx.number_of_edges(), 0);
+  for(std::size_t e = 0; e < candidate.size(); ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), m);
+    const auto& p = m.point(source(h, m));
+    const auto& q = m.point(target(h, m));
+    const bool horizontal = std::abs(p.y() - q.y()) < 1e-9, vertical = std::abs(p.x() - q.x()) < 1e-9;
+    if(horizontal && std::abs(p.y()) < 1e-9) kind[e] = 1;
+    if(vertical && std::abs(p.x()) < 1e-9 && (std::min)(p.y(), q.y()) > -1e-9) kind[e] = 1;
+    if(horizontal && std::abs(p.y() + 0.6) < 1e-9 && (std::max)(p.x(), q.x()) < -0.39) kind[e] = 2;
+    candidate[e] = kind[e] != 0 ? 1 : 0;
+  }
+  const std::vector<std::size_t> size = I::crease_line_sizes(idx, candidate);
+  std::array<std::size_t, 3> edges = { 0, 0, 0 };
+  for(std::size_t e = 0; e < candidate.size(); ++e)
+  {
+    ++edges[std::size_t(kind[e])];
+    BOOST_TEST(size[e] == (kind[e] == 1 ? 15u : kind[e] == 2 ? 3u : 0u));
+  }
+  BOOST_TEST(edges[1] == 15u);
+  BOOST_TEST(edges[2] == 3u);
+}
+
+BOOST_AUTO_TEST_CASE(narrow_filter_keeps_a_moderate_crease_under_light_noise)
+{
+  // A turned surface round the z axis, 48 facets round: a cylinder of radius 2 from
+  // z = 0 to 6 (24 rows) and a cone from radius 2 at z = 6 to 1 at z = 8 (9 rows), which
+  // bends from the cylinder by atan(1/2) = 26.6 degrees along the circle z = 6 (48
+  // edges); noise along the radial direction uniform in +-0.025 (a standard deviation of
+  // 0.0144, 0.15% of the diagonal 9.8).
+  const int around = 48, rows = 33, cylinder_rows = 24;
+  fs_test::Soup s = fs_test::parametric_grid(around, rows, true, false, [&](double u, double v) {
+    const double a = 2 * M_PI * u, j = v * rows;
+    const double t = j <= cylinder_rows ? 0. : (j - cylinder_rows) / (rows - cylinder_rows);
+    const double r = 2. - t, z = j <= cylinder_rows ? 0.25 * j : 6. + 2. * t;
+    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), z };
+  });
+  std::vector<std::array<double, 3> > radial;
+  for(const auto& p : s.points)
+  {
+    const double rho = std::hypot(p[0], p[1]);
+    radial.push_back({ p[0] / rho, p[1] / rho, 0. });
+  }
+  fs_test::add_noise_along(s, radial, 0.025);
+  const SM m = fs_test::to_mesh<SM>(s);
+  const I::Mesh_indexing<SM> idx(m);
+  const Geometry g = geometry_of(idx);
+  BOOST_TEST_MESSAGE("raw roughness " << g.roughness);
+  // lightly noisy: above the smooth models' range, below the staircase rule's
+  BOOST_TEST(g.roughness > I::Crease_gap::raw_roughness);
+  BOOST_TEST(g.roughness < I::Crease_staircase::roughness);
+  auto on_crease = [&](std::size_t e) {
+    const auto h = halfedge(idx.edge_at(e), m);
+    return std::abs(m.point(source(h, m)).z() - 6.) < 0.05 && std::abs(m.point(target(h, m)).z() - 6.) < 0.05;
+  };
+  const int rounds = I::noisy_filter_rounds(g.roughness, 40);
+  const std::vector<double> wide = I::dihedral_angles(
+    idx, I::filter_face_normals(g.normal, g.roughness, g.area, g.centroid, g.begin, g.ring, rounds,
+                                I::crease_filter_sigma_r, 0.));
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  std::size_t wide_on = 0, wide_off = 0;
+  for(std::size_t e = 0; e < wide.size(); ++e)
+    if(wide[e] >= 20.)
+    {
+      is_crease[e] = 1;
+      ++(on_crease(e) ? wide_on : wide_off);
+    }
+  std::vector<double> angle = wide;
+  const std::size_t added = I::add_narrow_filter_creases(idx, get(CGAL::vertex_point, m), g.normal, g.roughness,
+                                                         g.area, g.centroid, g.begin, g.ring, rounds, 20., is_crease,
+                                                         angle);
+  // an edge off the circle but within one row of it (a diagonal of the quads next to
+  // it) is a detour of the crease line
+  auto next_to_crease = [&](std::size_t e) {
+    const auto h = halfedge(idx.edge_at(e), m);
+    return std::abs(m.point(source(h, m)).z() - 6.) < 0.3 && std::abs(m.point(target(h, m)).z() - 6.) < 0.3;
+  };
+  std::size_t on = 0, off = 0, far = 0;
+  for(std::size_t e = 0; e < is_crease.size(); ++e)
+    if(is_crease[e])
+    {
+      ++(on_crease(e) ? on : off);
+      if(!next_to_crease(e)) ++far;
+    }
+  BOOST_TEST_MESSAGE("crease edges of the wide filter on the circle " << wide_on << ", elsewhere " << wide_off
+                     << "; with the narrow filter's " << on << ", " << off << " (" << added << " added)");
+  BOOST_TEST(on + off == wide_on + wide_off + added);
+  // the bilateral filter spreads the crease over a band (none of the circle's 48 edges
+  // reaches 20 degrees on this mesh); the narrow filter's creases hold at least seven
+  // eighths of the circle as one line, with at most a few detours next to it and
+  // nothing farther
+  BOOST_TEST(wide_on <= 12u);
+  BOOST_TEST(on >= 42u);
+  BOOST_TEST(off <= 3u);
+  BOOST_TEST(far == 0u);
+  // and so do the creases of the whole detection
+  std::vector<double> detected_angle;
+  bool clean = true, cad = false;
+  const std::vector<char> detected =
+    I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, detected_angle, clean, cad);
+  std::size_t detected_on = 0;
+  for(std::size_t e = 0; e < detected.size(); ++e)
+    if(detected[e] && on_crease(e)) ++detected_on;
+  BOOST_TEST(!clean);
+  BOOST_TEST(detected_on >= 42u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -12,6 +12,7 @@
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/cad_tessellation.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
+#include <CGAL/Feature_segmentation/internal/crease_narrow_filter.h>
 #include <CGAL/Feature_segmentation/internal/crease_staircase.h>
 #include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
 #include <CGAL/Feature_segmentation/internal/normal_filters.h>
@@ -179,28 +180,6 @@ inline double normal_roughness(const std::vector<Eigen::Vector3d>& n, const std:
   return std::sqrt(r[nf / 2]);
 }
 
-// The angle between the normals of the two faces of every edge, in degrees (0 for a
-// border edge or next to a degenerate face); by TBB's threads if `parallel`.
-template <typename TriangleMesh>
-std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal,
-                                    bool parallel = false)
-{
-  const TriangleMesh& tm = idx.mesh();
-  std::vector<double> angle(idx.number_of_edges(), 0.);
-  for_each_range(angle.size(), parallel, 8192, [&](std::size_t first, std::size_t last) {
-    for(std::size_t e = first; e < last; ++e)
-    {
-      const auto h = halfedge(idx.edge_at(e), tm);
-      const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
-      if(f == idx.npos || g == idx.npos) continue;
-      if(normal[f].squaredNorm() == 0 || normal[g].squaredNorm() == 0) continue;
-      const double c = (std::max)(-1., (std::min)(1., normal[f].dot(normal[g])));
-      angle[e] = std::acos(c) * 180. / 3.14159265358979323846;
-    }
-  });
-  return angle;
-}
-
 // The most rounds of filtering a smooth model gets (raw roughness between
 // crease_filter_roughness and Crease_gap::raw_roughness). Its roughness is mostly the
 // curvature of the surface, which the filter barely lowers (rockerarm took 32 rounds to
@@ -243,7 +222,9 @@ constexpr double crease_rough_plane_share = 0.2;
 // the normals neither makes creases in flat parts nor breaks real ones (on a heavily
 // noisy mesh also those of the normals filtered along their gradient, and not those that
 // are staircase steps: crease_staircase.h), and that pass the gap test
-// (keep_creases_with_gap), marked 1; on a clean tessellation (raw roughness at most
+// (keep_creases_with_gap), marked 1, and on a lightly noisy one (raw roughness from
+// Crease_gap::raw_roughness to Crease_staircase::roughness) those of a narrower filter
+// (add_narrow_filter_creases, crease_narrow_filter.h), marked 1; on a clean tessellation (raw roughness at most
 // crease_filter_roughness) and if `tangent`, the curvature discontinuities
 // (mark_tangent_discontinuities), marked 2; on a noisy one (raw roughness above
 // Crease_gap::raw_roughness) and if `tangent`, the borders of its planes on the filtered
@@ -333,6 +314,11 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   }
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
                         clean ? Crease_gap::strong_angle : 360., planar);
+  // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs
+  if(!smooth && filtered && raw_roughness < Crease_staircase::roughness)
+    add_narrow_filter_creases(idx, vpm, normal, raw_roughness, area, centroid, begin, ring,
+                              noisy_filter_rounds(raw_roughness, filter_iterations), crease_angle, is_crease, angle,
+                              parallel);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   if(planes)
     mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, smooth ? crease_rough_plane_share : 0.);

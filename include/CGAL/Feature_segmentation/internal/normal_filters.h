@@ -4,12 +4,16 @@
 // along the normals' gradient (crease_staircase.h says why). Both weigh a face's ring
 // with the same spatial Gaussian (normal_filter_spatial_weights()) and the same range
 // Gaussian on normal differences (Range_gaussian), and each round reads the previous
-// round only: the same result at any thread count.
+// round only: the same result at any thread count. Also the dihedral angles of a normal
+// field.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_NORMAL_FILTERS_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_NORMAL_FILTERS_H
 
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
+
+#include <CGAL/boost/graph/helpers.h>
 
 #include <Eigen/Dense>
 
@@ -218,6 +222,28 @@ inline std::vector<Eigen::Vector3d> filter_face_normals_along_gradient(const std
     n.swap(next);
   }
   return n;
+}
+
+// The angle between the normals of the two faces of every edge, in degrees (0 for a
+// border edge or next to a degenerate face); by TBB's threads if `parallel`.
+template <typename TriangleMesh>
+std::vector<double> dihedral_angles(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal,
+                                    bool parallel = false)
+{
+  const TriangleMesh& tm = idx.mesh();
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  for_each_range(angle.size(), parallel, 8192, [&](std::size_t first, std::size_t last) {
+    for(std::size_t e = first; e < last; ++e)
+    {
+      const auto h = halfedge(idx.edge_at(e), tm);
+      const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
+      if(f == idx.npos || g == idx.npos) continue;
+      if(normal[f].squaredNorm() == 0 || normal[g].squaredNorm() == 0) continue;
+      const double c = (std::max)(-1., (std::min)(1., normal[f].dot(normal[g])));
+      angle[e] = std::acos(c) * 180. / 3.14159265358979323846;
+    }
+  });
+  return angle;
 }
 
 } // namespace internal
