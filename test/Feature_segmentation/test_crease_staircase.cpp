@@ -190,8 +190,8 @@ BOOST_AUTO_TEST_CASE(narrow_filter_keeps_a_moderate_crease_under_light_noise)
     }
   std::vector<double> angle = wide;
   const std::size_t added = I::add_narrow_filter_creases(idx, get(CGAL::vertex_point, m), g.normal, g.roughness,
-                                                         g.area, g.centroid, g.begin, g.ring, rounds, 20., is_crease,
-                                                         angle);
+                                                         I::Normal_filter_ring(g.area, g.centroid, g.begin, g.ring),
+                                                         rounds, 20., is_crease, angle);
   // an edge off the circle but within one row of it (a diagonal of the quads next to
   // it) is a detour of the crease line
   auto next_to_crease = [&](std::size_t e) {

@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -262,12 +263,17 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   const bool smooth = raw_roughness <= Crease_gap::raw_roughness;
   const double stop = smooth ? crease_filter_roughness : 0.;
   const bool filtered = raw_roughness > crease_filter_roughness && filter_iterations > 0;
+  // the rings and spatial weights of every filter below, computed once
+  std::optional<Normal_filter_ring> rings;
   std::vector<Eigen::Vector3d> filtered_normal;
   if(filtered)
-    filtered_normal = filter_face_normals(normal, raw_roughness, area, centroid, begin, ring,
-                                 stop > 0 ? (std::min)(filter_iterations, crease_smooth_filter_iterations)
-                                          : noisy_filter_rounds(raw_roughness, filter_iterations),
-                                 crease_filter_sigma_r, stop, parallel);
+  {
+    rings.emplace(area, centroid, begin, ring);
+    filtered_normal = filter_face_normals(normal, raw_roughness, *rings,
+                                          stop > 0 ? (std::min)(filter_iterations, crease_smooth_filter_iterations)
+                                                   : noisy_filter_rounds(raw_roughness, filter_iterations),
+                                          crease_filter_sigma_r, stop, parallel);
+  }
   angle = filtered ? dihedral_angles(idx, filtered_normal, parallel) : raw;
   // the plane borders: on every rough mesh, those of a mesh that is not noisy only if
   // its planes hold crease_rough_plane_share of its area
@@ -301,9 +307,8 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   {
     const std::vector<double> along = dihedral_angles(
       idx,
-      filter_face_normals_along_gradient(normal, area, centroid, begin, ring,
-                                         noisy_filter_rounds(raw_roughness, filter_iterations), crease_filter_sigma_r,
-                                         parallel),
+      filter_face_normals_along_gradient(normal, *rings, noisy_filter_rounds(raw_roughness, filter_iterations),
+                                         crease_filter_sigma_r, parallel),
       parallel);
     const std::vector<char> step = staircase_creases(idx, vpm, is_crease, filtered_normal, centroid, parallel);
     for(std::size_t e = 0; e < angle.size(); ++e)
@@ -316,7 +321,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
                         clean ? Crease_gap::strong_angle : 360., planar);
   // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs
   if(!smooth && filtered && raw_roughness < Crease_staircase::roughness)
-    add_narrow_filter_creases(idx, vpm, normal, raw_roughness, area, centroid, begin, ring,
+    add_narrow_filter_creases(idx, vpm, normal, raw_roughness, *rings,
                               noisy_filter_rounds(raw_roughness, filter_iterations), crease_angle, is_crease, angle,
                               parallel);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);

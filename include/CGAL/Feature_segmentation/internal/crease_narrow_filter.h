@@ -70,26 +70,24 @@ std::vector<std::size_t> crease_line_sizes(const Mesh_indexing<TriangleMesh>& id
 
 // Adds to `is_crease` (marked 1, with their angle on the narrow filter in `angle` if
 // larger) the edges of the mesh of `idx` that bend by `crease_angle` or more on the face
-// normals after `rounds` rounds of the bilateral filter with
-// Narrow_filter_creases::sigma_r, are no staircase step of these creases
-// (staircase_creases()), are no crease yet and lie on a line of at least
-// Narrow_filter_creases::least_edges such edges (crease_line_sizes()); `normal`, `area`, `centroid`, `begin` and `ring` as
-// filter_face_normals() reads them; by TBB's threads if `parallel` (the same result at
-// any count). Returns the number of edges added.
+// normals `normal` (of raw roughness `raw_roughness`) after `rounds` rounds of the
+// bilateral filter on `rings` with Narrow_filter_creases::sigma_r, are no staircase
+// step of these creases (staircase_creases()), are no crease yet and lie on a line of
+// at least Narrow_filter_creases::least_edges such edges (crease_line_sizes()); by
+// TBB's threads if `parallel` (the same result at any count). Returns the number of
+// edges added.
 template <typename TriangleMesh, typename VPM>
 std::size_t add_narrow_filter_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
                                       const std::vector<Eigen::Vector3d>& normal, double raw_roughness,
-                                      const std::vector<double>& area, const std::vector<Eigen::Vector3d>& centroid,
-                                      const std::vector<std::uint32_t>& begin, const std::vector<std::uint32_t>& ring,
-                                      int rounds, double crease_angle, std::vector<char>& is_crease,
-                                      std::vector<double>& angle, bool parallel = false)
+                                      const Normal_filter_ring& rings, int rounds, double crease_angle,
+                                      std::vector<char>& is_crease, std::vector<double>& angle, bool parallel = false)
 {
-  const std::vector<Eigen::Vector3d> narrow_normal = filter_face_normals(
-    normal, raw_roughness, area, centroid, begin, ring, rounds, Narrow_filter_creases::sigma_r, 0., parallel);
+  const std::vector<Eigen::Vector3d> narrow_normal =
+    filter_face_normals(normal, raw_roughness, rings, rounds, Narrow_filter_creases::sigma_r, 0., parallel);
   const std::vector<double> narrow = dihedral_angles(idx, narrow_normal, parallel);
   std::vector<char> candidate(narrow.size(), 0);
   for(std::size_t e = 0; e < narrow.size(); ++e) candidate[e] = narrow[e] >= crease_angle ? 1 : 0;
-  const std::vector<char> step = staircase_creases(idx, vpm, candidate, narrow_normal, centroid, parallel);
+  const std::vector<char> step = staircase_creases(idx, vpm, candidate, narrow_normal, rings.centroid, parallel);
   for(std::size_t e = 0; e < narrow.size(); ++e)
     if(step[e] || is_crease[e]) candidate[e] = 0;
   const std::vector<std::size_t> line = crease_line_sizes(idx, candidate);

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The filters of the face normals that the crease detection reads on rough meshes
-// (crease_detection.h): the bilateral filter, and on heavily noisy meshes the filter
-// along the normals' gradient (crease_staircase.h says why). Both weigh a face's ring
-// with the same spatial Gaussian (normal_filter_spatial_weights()) and the same range
-// Gaussian on normal differences (Range_gaussian), and each round reads the previous
-// round only: the same result at any thread count. Also the dihedral angles of a normal
-// field.
+// (crease_detection.h): the bilateral filter (on lightly noisy meshes also with a
+// narrower range, crease_narrow_filter.h), and on heavily noisy meshes the filter along
+// the normals' gradient (crease_staircase.h says why). All weigh a face's ring with the
+// same spatial Gaussian (normal_filter_spatial_weights(), computed once per mesh in a
+// Normal_filter_ring) and the same range Gaussian on normal differences
+// (Range_gaussian), and each round reads the previous round only: the same result at
+// any thread count. Also the dihedral angles of a normal field.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_NORMAL_FILTERS_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_NORMAL_FILTERS_H
@@ -91,6 +92,25 @@ inline std::vector<double> normal_filter_spatial_weights(const std::vector<doubl
   return spatial;
 }
 
+// The rings of the faces (`begin`, `ring`: CSR, as vertex_adjacent_faces() lists them)
+// with the filters' spatial weights (normal_filter_spatial_weights()) and the faces'
+// centroids: computed once for every filter that a mesh's normals go through. Holds
+// references to `centroid`, `begin` and `ring`, which must outlive it.
+struct Normal_filter_ring
+{
+  Normal_filter_ring(const std::vector<double>& area, const std::vector<Eigen::Vector3d>& centroid,
+                     const std::vector<std::uint32_t>& begin, const std::vector<std::uint32_t>& ring)
+    : centroid(centroid), begin(begin), ring(ring),
+      spatial(normal_filter_spatial_weights(area, centroid, begin, ring, spacing))
+  {}
+
+  const std::vector<Eigen::Vector3d>& centroid;
+  const std::vector<std::uint32_t>& begin;
+  const std::vector<std::uint32_t>& ring;
+  double spacing = 0; // declared before `spatial`, whose initializer sets it
+  std::vector<double> spatial;
+};
+
 // Face normals filtered so that noise fades and creases stay sharp: bilateral normal
 // filtering (Zheng, Fu, Au, Tai, IEEE TVCG 2011) over the faces sharing a vertex, with
 // a spatial Gaussian of the mean distance between neighbouring centroids and a range
@@ -98,18 +118,15 @@ inline std::vector<double> normal_filter_spatial_weights(const std::vector<doubl
 // stopping once the roughness (normal_roughness; `initial_roughness` before the first
 // round) is at most `stop_roughness`; with stop_roughness 0 every round runs.
 inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen::Vector3d>& normal,
-                                                        double initial_roughness,
-                                                        const std::vector<double>& area,
-                                                        const std::vector<Eigen::Vector3d>& centroid,
-                                                        const std::vector<std::uint32_t>& begin,
-                                                        const std::vector<std::uint32_t>& ring,
+                                                        double initial_roughness, const Normal_filter_ring& rings,
                                                         int max_iterations, double sigma_r, double stop_roughness,
                                                         bool parallel = false)
 {
   if(max_iterations <= 0 || initial_roughness <= stop_roughness) return normal;
   const std::size_t nf = normal.size();
-  double spacing = 0;
-  const std::vector<double> spatial = normal_filter_spatial_weights(area, centroid, begin, ring, spacing);
+  const std::vector<std::uint32_t>& begin = rings.begin;
+  const std::vector<std::uint32_t>& ring = rings.ring;
+  const std::vector<double>& spatial = rings.spatial;
   const Range_gaussian range(sigma_r);
   std::vector<Eigen::Vector3d> n = normal, next(nf);
   // With a stop, every round also measures the roughness of the normals it reads
@@ -152,6 +169,22 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
   return n;
 }
 
+// The same on the rings of `begin` and `ring` with the spatial weights of `area` and
+// `centroid`, computed for this call.
+inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen::Vector3d>& normal,
+                                                        double initial_roughness,
+                                                        const std::vector<double>& area,
+                                                        const std::vector<Eigen::Vector3d>& centroid,
+                                                        const std::vector<std::uint32_t>& begin,
+                                                        const std::vector<std::uint32_t>& ring,
+                                                        int max_iterations, double sigma_r, double stop_roughness,
+                                                        bool parallel = false)
+{
+  if(max_iterations <= 0 || initial_roughness <= stop_roughness) return normal;
+  return filter_face_normals(normal, initial_roughness, Normal_filter_ring(area, centroid, begin, ring),
+                             max_iterations, sigma_r, stop_roughness, parallel);
+}
+
 // Face normals filtered as filter_face_normals() does (`rounds` rounds, range parameter
 // `sigma_r`, the same spatial Gaussian), but along their gradient: each round, face f
 // fits the gradient G of the normals over its ring (n_g - n_f ~ G d_g, d_g the
@@ -161,16 +194,16 @@ inline std::vector<Eigen::Vector3d> filter_face_normals(const std::vector<Eigen:
 // with the spatial and range weights, the range Gaussian on n_g - G d_g - n_f. Each face
 // reads the previous round only: the same result at any thread count.
 inline std::vector<Eigen::Vector3d> filter_face_normals_along_gradient(const std::vector<Eigen::Vector3d>& normal,
-                                                                       const std::vector<double>& area,
-                                                                       const std::vector<Eigen::Vector3d>& centroid,
-                                                                       const std::vector<std::uint32_t>& begin,
-                                                                       const std::vector<std::uint32_t>& ring,
-                                                                       int rounds, double sigma_r, bool parallel = false)
+                                                                       const Normal_filter_ring& rings, int rounds,
+                                                                       double sigma_r, bool parallel = false)
 {
   const std::size_t nf = normal.size();
   const Range_gaussian range(sigma_r);
-  double spacing = 0;
-  const std::vector<double> spatial = normal_filter_spatial_weights(area, centroid, begin, ring, spacing);
+  const std::vector<Eigen::Vector3d>& centroid = rings.centroid;
+  const std::vector<std::uint32_t>& begin = rings.begin;
+  const std::vector<std::uint32_t>& ring = rings.ring;
+  const std::vector<double>& spatial = rings.spatial;
+  const double spacing = rings.spacing;
   std::vector<Eigen::Vector3d> n = normal, next(nf);
   for(int it = 0; it < rounds; ++it)
   {
@@ -222,6 +255,19 @@ inline std::vector<Eigen::Vector3d> filter_face_normals_along_gradient(const std
     n.swap(next);
   }
   return n;
+}
+
+// The same on the rings of `begin` and `ring` with the spatial weights of `area` and
+// `centroid`, computed for this call.
+inline std::vector<Eigen::Vector3d> filter_face_normals_along_gradient(const std::vector<Eigen::Vector3d>& normal,
+                                                                       const std::vector<double>& area,
+                                                                       const std::vector<Eigen::Vector3d>& centroid,
+                                                                       const std::vector<std::uint32_t>& begin,
+                                                                       const std::vector<std::uint32_t>& ring,
+                                                                       int rounds, double sigma_r, bool parallel = false)
+{
+  return filter_face_normals_along_gradient(normal, Normal_filter_ring(area, centroid, begin, ring), rounds, sigma_r,
+                                            parallel);
 }
 
 // The angle between the normals of the two faces of every edge, in degrees (0 for a
