@@ -225,8 +225,9 @@ constexpr double crease_rough_plane_share = 0.2;
 // are staircase steps: crease_staircase.h), and that pass the gap test
 // (keep_creases_with_gap), marked 1, and on a lightly noisy one (raw roughness from
 // Crease_gap::raw_roughness to Crease_staircase::roughness) those of a narrower filter
-// (add_narrow_filter_creases, crease_narrow_filter.h), marked 1; on a clean tessellation (raw roughness at most
-// crease_filter_roughness) and if `tangent`, the curvature discontinuities
+// (add_narrow_filter_creases, crease_narrow_filter.h), marked 1; on a clean
+// tessellation (raw roughness at most crease_filter_roughness) and if `tangent`, the
+// curvature discontinuities
 // (mark_tangent_discontinuities), marked 2; on a noisy one (raw roughness above
 // Crease_gap::raw_roughness) and if `tangent`, the borders of its planes on the filtered
 // normals (mark_plane_borders), marked 2, and so on any other rough one whose planes
