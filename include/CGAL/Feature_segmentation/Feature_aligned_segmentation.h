@@ -59,6 +59,11 @@ namespace Feature_segmentation {
 /// number of edits, and undo and redo are exact. A copy of the object shares the
 /// precomputation and the states (it is cheap), and edits each copy on its own.
 ///
+/// On a rough mesh (not a clean tessellation) with creases looked for, every solve (the
+/// constructor's and each edit's) ends by joining each patch of at most ten vertices into
+/// a neighbouring patch, as `segment_along_features()` does; a sketch or a local refine
+/// on such a mesh cannot cut out a piece of fewer vertices.
+///
 /// A vertex that no face uses (isolated) is a patch of its own. If an edit throws (a
 /// user solver, memory), nothing has changed: the new state is published only once
 /// complete.

@@ -35,8 +35,11 @@ namespace Feature_segmentation {
 /// pulled back to the vertices. `use_oversegmentation(false)` clusters the full vertex
 /// graph instead.
 ///
-/// The vertex labels are the clustering's output; a patch's boundary is the dual of its
-/// cut edges. A face gets the patch that covers most of its area under these boundaries
+/// The vertex labels are the clustering's output, except on a rough mesh (one that is
+/// not a clean tessellation: noisy, or a smooth model) whose creases are looked for
+/// (`crease_angle` below 180): there a patch of at most ten vertices (of the mesh cut
+/// open along its creases) is noise, and joins the neighbouring patch whose join raises
+/// the cut cost least. A patch's boundary is the dual of its cut edges. A face gets the patch that covers most of its area under these boundaries
 /// (the rule of `majority_face_patches()` on `compute_patch_boundaries()`; ties to the
 /// smallest id): a face whose vertices share a patch gets it.
 ///

@@ -31,16 +31,19 @@ struct Reduction
   Oversegmentation os;
   Reduced_graph rg;
   std::vector<std::size_t> segments_in_vertex_order;
+  std::vector<std::size_t> segment_size; // vertices per segment
 
-  // Sets segments_in_vertex_order from os (every vertex in a segment).
+  // Sets segments_in_vertex_order and segment_size from os (every vertex in a segment).
   void order_segments()
   {
     std::vector<char> seen(os.number_of_segments, 0);
     segments_in_vertex_order.clear();
     segments_in_vertex_order.reserve(os.number_of_segments);
+    segment_size.assign(os.number_of_segments, 0);
     for(std::size_t s : os.vertex_segment)
     {
       CGAL_assertion(s < os.number_of_segments);
+      ++segment_size[s];
       if(!seen[s]) { seen[s] = 1; segments_in_vertex_order.push_back(s); }
     }
     CGAL_postcondition(segments_in_vertex_order.size() == os.number_of_segments);
@@ -48,7 +51,8 @@ struct Reduction
 
   std::size_t memory() const
   {
-    return (os.vertex_segment.capacity() + segments_in_vertex_order.capacity()) * sizeof(std::size_t) +
+    return (os.vertex_segment.capacity() + segments_in_vertex_order.capacity() + segment_size.capacity()) *
+             sizeof(std::size_t) +
            rg.edges.capacity() * sizeof(std::pair<std::size_t, std::size_t>) +
            (rg.cross_begin.capacity() + rg.cross.capacity()) * sizeof(std::size_t);
   }

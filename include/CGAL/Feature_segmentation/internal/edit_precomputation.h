@@ -119,6 +119,10 @@ public:
     return cut.is_cut() ? ties_of(cut.input_edge[e]) : std::make_pair(e, e);
   }
   bool is_crease_edge(edge_descriptor e) const { return cut.is_cut() && cut.is_crease[input_idx->id(e)] != 0; }
+  // Whether every solve joins the patches of a few vertices into a neighbour
+  // (join_small_patches()): on a mesh whose creases were looked for (crease_angle below
+  // 180) and that is no clean tessellation (a noisy mesh or a smooth model).
+  bool joins_small_patches() const { return opt.crease_angle < 180 && !cut.clean; }
   bool is_curvature_discontinuity_edge(edge_descriptor e) const
   {
     return cut.is_cut() && cut.is_crease[input_idx->id(e)] == 2;

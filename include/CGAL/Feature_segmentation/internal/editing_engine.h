@@ -14,6 +14,7 @@
 #include <CGAL/Feature_segmentation/internal/edit_precomputation.h>
 #include <CGAL/Feature_segmentation/internal/face_patch_rule.h>
 #include <CGAL/Feature_segmentation/internal/sketch_walk.h>
+#include <CGAL/Feature_segmentation/internal/small_patches.h>
 
 #include <algorithm>
 #include <chrono>
@@ -408,6 +409,10 @@ private:
       const std::size_t nd = node[group[i]];
       if(nd != std::size_t(-1)) (*patch)[i] = offset + lab[nd];
     }
+    // on a rough mesh, the few faces that noise cuts out join a neighbour
+    if(m_pre->joins_small_patches())
+      join_small_patches(r.rg, r.segment_size, [&s](std::size_t e) { return s.weight(e); }, small_patch_max_vertices,
+                         *patch);
     s.number_of_patches = normalize_patches(r, *patch);
     s.segment_patch = patch;
   }
