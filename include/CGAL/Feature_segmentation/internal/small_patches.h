@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The patches of a rough mesh too small to be a surface of their own: on a mesh that is
-// not a clean tessellation, the solve also cuts out a few faces tilted far from their
-// neighbours by noise that survived the normal filter (the creases of
-// join_isolated_crease_faces() bound most such pieces, the solve the rest). After every
-// solve, each patch of at most small_patch_max_vertices vertices joins the neighbouring
-// patch whose join costs the clustering's objective least.
+// The patches of a rough mesh too small to be a surface of their own. On a mesh that is
+// not a clean tessellation, noise that survived the normal filter tilts a few faces far
+// from their neighbours; join_isolated_crease_faces() joins the pieces that creases
+// alone cut out, but the solve also cuts out pieces bounded partly by creases and partly
+// by cut edges. After every solve, each patch of at most small_patch_max_vertices
+// vertices joins the neighbouring patch whose join costs the clustering's objective
+// least.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_SMALL_PATCHES_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_SMALL_PATCHES_H
