@@ -39,9 +39,10 @@ namespace Feature_segmentation {
 /// not a clean tessellation: noisy, or a smooth model) whose creases are looked for
 /// (`crease_angle` below 180): there a patch of at most ten vertices (of the mesh cut
 /// open along its creases) is noise, and joins the neighbouring patch whose join raises
-/// the cut cost least. A patch's boundary is the dual of its cut edges. A face gets the patch that covers most of its area under these boundaries
-/// (the rule of `majority_face_patches()` on `compute_patch_boundaries()`; ties to the
-/// smallest id): a face whose vertices share a patch gets it.
+/// the cut cost least. A patch's boundary is the dual of its cut edges. A face gets the
+/// patch that covers most of its area under these boundaries (the rule of
+/// `majority_face_patches()` on `compute_patch_boundaries()`; ties to the smallest id): a
+/// face whose vertices share a patch gets it.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexPatchMap a `WritablePropertyMap` from `vertex_descriptor` to an integer type
