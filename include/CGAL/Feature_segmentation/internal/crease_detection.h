@@ -13,6 +13,7 @@
 #include <CGAL/Feature_segmentation/internal/cad_tessellation.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/crease_narrow_filter.h>
+#include <CGAL/Feature_segmentation/internal/crease_side_means.h>
 #include <CGAL/Feature_segmentation/internal/crease_staircase.h>
 #include <CGAL/Feature_segmentation/internal/isolated_crease_faces.h>
 #include <CGAL/Feature_segmentation/internal/normal_filters.h>
@@ -320,11 +321,14 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   }
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
                         clean ? Crease_gap::strong_angle : 360., planar);
-  // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs
+  // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs,
+  // a heavily noisy one those that it wipes out
   if(!smooth && filtered && raw_roughness < Crease_staircase::roughness)
     add_narrow_filter_creases(idx, vpm, normal, raw_roughness, *rings,
                               noisy_filter_rounds(raw_roughness, filter_iterations), crease_angle, is_crease, angle,
                               parallel);
+  else if(!smooth && filtered)
+    add_side_mean_creases(idx, vpm, normal, area, centroid, filtered_normal, crease_angle, is_crease, angle, parallel);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   if(planes)
     mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, smooth ? crease_rough_plane_share : 0.);

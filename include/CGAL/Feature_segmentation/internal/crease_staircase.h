@@ -52,6 +52,37 @@ struct Crease_staircase
   static constexpr double reach = 4.;
 };
 
+// The midpoint and unit direction (source to target; zero for an edge of length 0) of
+// every edge of the mesh of `idx`, and its length in `length` if given; returns the mean
+// edge length (0 without edges).
+template <typename TriangleMesh, typename VPM>
+double edge_middles_and_directions(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
+                                   std::vector<Eigen::Vector3d>& middle, std::vector<Eigen::Vector3d>& direction,
+                                   std::vector<double>* length = nullptr)
+{
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t ne = idx.number_of_edges();
+  middle.resize(ne);
+  direction.resize(ne);
+  if(length) length->resize(ne);
+  double sum = 0;
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    const auto& p = get(vpm, source(h, tm));
+    const auto& q = get(vpm, target(h, tm));
+    const Eigen::Vector3d a(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const Eigen::Vector3d b(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+    middle[e] = 0.5 * (a + b);
+    direction[e] = b - a;
+    const double len = direction[e].norm();
+    sum += len;
+    if(len > 0) direction[e] /= len;
+    if(length) (*length)[e] = len;
+  }
+  return ne > 0 ? sum / double(ne) : 0.;
+}
+
 // Per edge of the mesh of `idx`, whether it is a candidate (nonzero in `candidate`) with
 // another candidate nearly parallel to it on both sides (Crease_staircase): the
 // candidates met on the faces reached from its two faces across edges, staying within
@@ -70,24 +101,10 @@ std::vector<char> staircase_creases(const Mesh_indexing<TriangleMesh>& idx, VPM 
   const std::size_t ne = idx.number_of_edges(), nf = idx.number_of_faces();
   const Id none = Id(-1);
   // every edge's midpoint and unit direction, every face's edges and the faces across them
-  std::vector<Eigen::Vector3d> middle(ne), direction(ne);
-  double sum = 0;
-  for(std::size_t e = 0; e < ne; ++e)
-  {
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const auto& p = get(vpm, source(h, tm));
-    const auto& q = get(vpm, target(h, tm));
-    const Eigen::Vector3d a(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    const Eigen::Vector3d b(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    middle[e] = 0.5 * (a + b);
-    direction[e] = b - a;
-    const double len = direction[e].norm();
-    sum += len;
-    if(len > 0) direction[e] /= len;
-  }
+  std::vector<Eigen::Vector3d> middle, direction;
+  const double w = edge_middles_and_directions(idx, vpm, middle, direction);
   std::vector<Id> face_edge, across;
   face_edges_and_neighbours(idx, none, face_edge, across);
-  const double w = ne > 0 ? sum / double(ne) : 0.;
   std::vector<std::size_t> candidates;
   for(std::size_t e = 0; e < ne; ++e)
     if(candidate[e]) candidates.push_back(e);

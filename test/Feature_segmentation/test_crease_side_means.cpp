@@ -1,0 +1,227 @@
+// The side-mean creases of heavily noisy meshes (crease_side_means.h): on a noisy turned
+// surface the cone's crease of 26.6 degrees, which the bilateral filter wipes out, is
+// found along its circle, with detours of a few rows; on a noisy thin cylinder, whose curvature
+// alone bends the two sides' mean normals by 29 degrees, nothing is added; on a roof the
+// ridge is found, and once it is a crease it bounds the sides.
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Feature_segmentation/internal/crease_detection.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "test_meshes.h"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace FS = CGAL::Feature_segmentation;
+
+BOOST_AUTO_TEST_SUITE(crease_side_means)
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Surface_mesh<Epick::Point_3> SM;
+namespace I = FS::internal;
+
+struct Geometry
+{
+  std::vector<Eigen::Vector3d> normal, centroid, filtered;
+  std::vector<double> area;
+  std::vector<std::uint32_t> begin, ring;
+  double roughness = 0;
+};
+
+// The raw normals and those of the bilateral filter as detect_creases() runs it on a
+// heavily noisy mesh.
+Geometry geometry_of(const I::Mesh_indexing<SM>& idx)
+{
+  Geometry g;
+  I::face_geometry(idx, get(CGAL::vertex_point, idx.mesh()), g.normal, g.area, g.centroid);
+  I::vertex_adjacent_faces(idx, g.begin, g.ring);
+  g.roughness = I::normal_roughness(g.normal, g.begin, g.ring);
+  g.filtered = I::filter_face_normals(g.normal, g.roughness, I::Normal_filter_ring(g.area, g.centroid, g.begin, g.ring),
+                                      I::noisy_filter_rounds(g.roughness, 40), I::crease_filter_sigma_r, 0.);
+  return g;
+}
+
+// Noise along the radial directions (uniform in +-amplitude) of a surface round the z axis.
+void add_radial_noise(fs_test::Soup& s, double amplitude)
+{
+  std::vector<std::array<double, 3> > radial;
+  for(const auto& p : s.points)
+  {
+    const double rho = std::hypot(p[0], p[1]);
+    radial.push_back({ p[0] / rho, p[1] / rho, 0. });
+  }
+  fs_test::add_noise_along(s, radial, amplitude);
+}
+
+std::size_t count(const std::vector<char>& marks)
+{
+  std::size_t n = 0;
+  for(char c : marks) n += c != 0;
+  return n;
+}
+
+BOOST_AUTO_TEST_CASE(cone_crease_under_heavy_noise)
+{
+  // A cylinder of radius 2 from z = 0 to 6 (24 rows) and a cone from radius 2 at z = 6
+  // to 1 at z = 8 (9 rows), 48 facets round: the cone bends from the cylinder by
+  // atan(1/2) = 26.6 degrees along the circle z = 6 (48 edges). Radial noise uniform in
+  // +-0.1 (a standard deviation of 0.058, 0.6% of the diagonal 9.8; 0.4 of the rows'
+  // height of 0.25).
+  const int around = 48, rows = 33, cylinder_rows = 24;
+  fs_test::Soup s = fs_test::parametric_grid(around, rows, true, false, [&](double u, double v) {
+    const double a = 2 * M_PI * u, j = v * rows;
+    const double t = j <= cylinder_rows ? 0. : (j - cylinder_rows) / (rows - cylinder_rows);
+    const double r = 2. - t, z = j <= cylinder_rows ? 0.25 * j : 6. + 2. * t;
+    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), z };
+  });
+  add_radial_noise(s, 0.1);
+  const SM m = fs_test::to_mesh<SM>(s);
+  const I::Mesh_indexing<SM> idx(m);
+  const Geometry g = geometry_of(idx);
+  BOOST_TEST_MESSAGE("raw roughness " << g.roughness);
+  BOOST_TEST(g.roughness >= I::Crease_staircase::roughness); // heavily noisy
+  auto within = [&](std::size_t e, double dz) {
+    const auto h = halfedge(idx.edge_at(e), m);
+    return std::abs(m.point(source(h, m)).z() - 6.) < dz && std::abs(m.point(target(h, m)).z() - 6.) < dz;
+  };
+  // the bilateral filter wipes the crease out: no edge of the circle bends by 20 degrees
+  const std::vector<double> filtered_angle = I::dihedral_angles(idx, g.filtered);
+  std::size_t filtered_on = 0;
+  for(std::size_t e = 0; e < filtered_angle.size(); ++e)
+    if(filtered_angle[e] >= 20. && within(e, 0.05)) ++filtered_on;
+  BOOST_TEST(filtered_on == 0u);
+
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  const std::size_t added = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
+                                                     g.filtered, 20., is_crease, angle);
+  std::size_t on = 0, one_row = 0, two_rows = 0, far = 0;
+  double least_on = 180., farthest = 0.;
+  for(std::size_t e = 0; e < is_crease.size(); ++e)
+    if(is_crease[e])
+    {
+      const auto h = halfedge(idx.edge_at(e), m);
+      farthest = (std::max)({ farthest, std::abs(m.point(source(h, m)).z() - 6.), std::abs(m.point(target(h, m)).z() - 6.) });
+      if(within(e, 0.05)) { ++on; least_on = (std::min)(least_on, angle[e]); }
+      else if(within(e, 0.3)) ++one_row;
+      else if(within(e, 0.55)) ++two_rows;
+      else ++far;
+    }
+  BOOST_TEST_MESSAGE("added " << added << ": on the circle " << on << ", within one row " << one_row
+                     << ", within two " << two_rows << ", farther " << far << " (at most " << farthest
+                     << " from it); least bend on the circle "
+                     << least_on);
+  BOOST_TEST(added == count(is_crease));
+  // At least seven eighths of the circle, each bending by the crease angle or more. The
+  // noise moves the peak of the bend across the line by a row or more here and there:
+  // the line takes diagonals and rows beside the circle there (fewer edges than the
+  // circle's, mostly within two rows), none farther than four rows (1.0).
+  BOOST_TEST(on >= 42u);
+  BOOST_TEST(least_on >= 20.);
+  BOOST_TEST(one_row + two_rows + far <= 48u);
+  BOOST_TEST(far <= one_row + two_rows);
+  BOOST_TEST(farthest <= 1.05);
+
+  // and so do the creases of the whole detection
+  std::vector<double> detected_angle;
+  bool clean = true, cad = false;
+  const std::vector<char> detected =
+    I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, detected_angle, clean, cad);
+  std::size_t detected_on = 0;
+  for(std::size_t e = 0; e < detected.size(); ++e)
+    if(detected[e] && within(e, 0.05)) ++detected_on;
+  BOOST_TEST(!clean);
+  BOOST_TEST(detected_on >= 42u);
+}
+
+BOOST_AUTO_TEST_CASE(thin_cylinder_under_heavy_noise_gets_none)
+{
+  // A cylinder of radius 1 and height 6, 32 facets round (0.196 wide) and 30 rows (0.2
+  // high): median edge length 0.2, so the disks have radius 0.6. A half disk's mean
+  // normal turns by 4R / (3 pi r) from the edge's, the two sides' by 8R / (3 pi r) =
+  // 0.51 rad = 29 degrees, well above the crease angle on every edge along the axis;
+  // radial noise uniform in +-0.05 (0.25 of the rows' height). Over twice the radius the
+  // bend doubles, over half of it it halves: no crease.
+  fs_test::Soup s = fs_test::cylinder(1., 6., 32, 30);
+  add_radial_noise(s, 0.05);
+  const SM m = fs_test::to_mesh<SM>(s);
+  const I::Mesh_indexing<SM> idx(m);
+  const Geometry g = geometry_of(idx);
+  BOOST_TEST_MESSAGE("raw roughness " << g.roughness);
+  BOOST_TEST(g.roughness >= I::Crease_staircase::roughness);
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  const std::size_t added = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
+                                                     g.filtered, 20., is_crease, angle);
+  BOOST_TEST(added == 0u);
+  BOOST_TEST(count(is_crease) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
+{
+  // A noiseless roof: two planes meeting along the line x = 0 of a grid (z = |x| / 2 over
+  // [-1, 1]^2, 40 x 40 cells of 0.05, one diagonal per cell), whose normals are
+  // 2 atan(1/2) = 53.13 degrees apart. Without creases, the ridge's 40 edges bend by
+  // exactly that much (their
+  // disks split at the ridge; those of the ends are cut by the border on both sides
+  // alike) and are added; the edges parallel to it one column away are not (the disk
+  // moved onto the ridge bends more), and of the rest only a few diagonals of the
+  // ridge's faces are (their split is oblique), all within one column of it. With the ridge marked a crease, the sides stop at it: no edge is added.
+  fs_test::Soup s = fs_test::parametric_grid(40, 40, false, false, [](double u, double v) {
+    const double x = 2 * u - 1, y = 2 * v - 1;
+    return std::array<double, 3>{ x, y, 0.5 * std::abs(x) };
+  });
+  const SM m = fs_test::to_mesh<SM>(s);
+  const I::Mesh_indexing<SM> idx(m);
+  Geometry g;
+  I::face_geometry(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid);
+  auto within = [&](std::size_t e, double dx) {
+    const auto h = halfedge(idx.edge_at(e), m);
+    return std::abs(m.point(source(h, m)).x()) < dx && std::abs(m.point(target(h, m)).x()) < dx;
+  };
+  auto parallel_to_ridge = [&](std::size_t e) {
+    const auto h = halfedge(idx.edge_at(e), m);
+    return std::abs(m.point(source(h, m)).x() - m.point(target(h, m)).x()) < 1e-9;
+  };
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  const std::size_t added = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
+                                                     g.normal, 20., is_crease, angle);
+  std::size_t ridge = 0, ridge_added = 0, beside = 0;
+  for(std::size_t e = 0; e < is_crease.size(); ++e)
+  {
+    const bool on_ridge = within(e, 1e-9);
+    ridge += on_ridge;
+    if(!is_crease[e]) continue;
+    if(on_ridge)
+    {
+      ++ridge_added;
+      BOOST_TEST(angle[e] == 2 * std::atan(0.5) * 180. / M_PI, boost::test_tools::tolerance(1e-9));
+    }
+    else
+    {
+      ++beside;
+      BOOST_TEST(within(e, 0.05 + 1e-9));
+      BOOST_TEST(!parallel_to_ridge(e));
+    }
+  }
+  BOOST_TEST_MESSAGE("added " << added << ": the ridge's " << ridge_added << " of " << ridge << ", " << beside
+                     << " diagonals beside it");
+  BOOST_TEST(ridge == 40u);
+  BOOST_TEST(ridge_added == 40u);
+  BOOST_TEST(added == ridge_added + beside);
+
+  std::vector<char> marked(idx.number_of_edges(), 0);
+  for(std::size_t e = 0; e < marked.size(); ++e) marked[e] = within(e, 1e-9) ? 1 : 0;
+  std::vector<double> angle2(idx.number_of_edges(), 0.);
+  const std::size_t with = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
+                                                    g.normal, 20., marked, angle2);
+  BOOST_TEST(with == 0u);
+  BOOST_TEST(count(marked) == 40u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
