@@ -10,6 +10,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "crease_test_geometry.h"
 #include "test_meshes.h"
 
 #include <array>
@@ -24,12 +25,9 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Surface_mesh<Epick::Point_3> SM;
 namespace I = FS::internal;
 
-struct Geometry
+struct Geometry : fs_test::Face_geometry
 {
-  std::vector<Eigen::Vector3d> normal, centroid, filtered;
-  std::vector<double> area;
-  std::vector<std::uint32_t> begin, ring;
-  double roughness = 0;
+  std::vector<Eigen::Vector3d> filtered;
 };
 
 // The raw normals and those of the bilateral filter as detect_creases() runs it on a
@@ -37,9 +35,7 @@ struct Geometry
 Geometry geometry_of(const I::Mesh_indexing<SM>& idx)
 {
   Geometry g;
-  I::face_geometry(idx, get(CGAL::vertex_point, idx.mesh()), g.normal, g.area, g.centroid);
-  I::vertex_adjacent_faces(idx, g.begin, g.ring);
-  g.roughness = I::normal_roughness(g.normal, g.begin, g.ring);
+  static_cast<fs_test::Face_geometry&>(g) = fs_test::face_geometry_of(idx);
   g.filtered = I::filter_face_normals(g.normal, g.roughness, I::Normal_filter_ring(g.area, g.centroid, g.begin, g.ring),
                                       I::noisy_filter_rounds(g.roughness, 40), I::crease_filter_sigma_r, 0.);
   return g;
@@ -177,8 +173,7 @@ BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
   });
   const SM m = fs_test::to_mesh<SM>(s);
   const I::Mesh_indexing<SM> idx(m);
-  Geometry g;
-  I::face_geometry(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid);
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
   auto within = [&](std::size_t e, double dx) {
     const auto h = halfedge(idx.edge_at(e), m);
     return std::abs(m.point(source(h, m)).x()) < dx && std::abs(m.point(target(h, m)).x()) < dx;

@@ -12,6 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "crease_test_geometry.h"
 #include "test_meshes.h"
 
 #include <algorithm>
@@ -27,22 +28,9 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Surface_mesh<Epick::Point_3> SM;
 namespace I = FS::internal;
 
-struct Geometry
-{
-  std::vector<Eigen::Vector3d> normal, centroid;
-  std::vector<double> area;
-  std::vector<std::uint32_t> begin, ring;
-  double roughness = 0;
-};
+typedef fs_test::Face_geometry Geometry;
 
-Geometry geometry_of(const I::Mesh_indexing<SM>& idx)
-{
-  Geometry g;
-  I::face_geometry(idx, get(CGAL::vertex_point, idx.mesh()), g.normal, g.area, g.centroid);
-  I::vertex_adjacent_faces(idx, g.begin, g.ring);
-  g.roughness = I::normal_roughness(g.normal, g.begin, g.ring);
-  return g;
-}
+Geometry geometry_of(const I::Mesh_indexing<SM>& idx) { return fs_test::face_geometry_of(idx); }
 
 BOOST_AUTO_TEST_CASE(middle_of_three_parallel_lines_is_a_step)
 {

@@ -68,6 +68,26 @@ std::vector<std::size_t> crease_line_sizes(const Mesh_indexing<TriangleMesh>& id
   return size;
 }
 
+// Marks in `is_crease` (1) the edges of `candidate` (nonzero) that lie on a line of at
+// least `least_edges` of them (crease_line_sizes()), raising their `angle` to their
+// `value` if larger; returns their number.
+template <typename TriangleMesh>
+std::size_t add_crease_lines(const Mesh_indexing<TriangleMesh>& idx, const std::vector<char>& candidate,
+                             const std::vector<double>& value, std::size_t least_edges, std::vector<char>& is_crease,
+                             std::vector<double>& angle)
+{
+  const std::vector<std::size_t> line = crease_line_sizes(idx, candidate);
+  std::size_t added = 0;
+  for(std::size_t e = 0; e < line.size(); ++e)
+    if(line[e] >= least_edges)
+    {
+      is_crease[e] = 1;
+      angle[e] = (std::max)(angle[e], value[e]);
+      ++added;
+    }
+  return added;
+}
+
 // Adds to `is_crease` (marked 1, with their angle on the narrow filter in `angle` if
 // larger) the edges of the mesh of `idx` that bend by `crease_angle` or more on the face
 // normals `normal` (of raw roughness `raw_roughness`) after `rounds` rounds of the
@@ -90,16 +110,7 @@ std::size_t add_narrow_filter_creases(const Mesh_indexing<TriangleMesh>& idx, VP
   const std::vector<char> step = staircase_creases(idx, vpm, candidate, narrow_normal, rings.centroid, parallel);
   for(std::size_t e = 0; e < narrow.size(); ++e)
     if(step[e] || is_crease[e]) candidate[e] = 0;
-  const std::vector<std::size_t> line = crease_line_sizes(idx, candidate);
-  std::size_t added = 0;
-  for(std::size_t e = 0; e < narrow.size(); ++e)
-    if(line[e] >= Narrow_filter_creases::least_edges)
-    {
-      is_crease[e] = 1;
-      angle[e] = (std::max)(angle[e], narrow[e]);
-      ++added;
-    }
-  return added;
+  return add_crease_lines(idx, candidate, narrow, Narrow_filter_creases::least_edges, is_crease, angle);
 }
 
 } // namespace internal

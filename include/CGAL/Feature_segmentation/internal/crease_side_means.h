@@ -63,7 +63,7 @@ struct Side_mean_creases
 // crossing a crease of `is_crease`, split by the plane through the edge across the
 // surface), where the bend peaks across the edge, does not grow over a wider disk as a
 // curved face's does nor fade over a narrower one, and such edges join into a line of
-// Side_mean_creases::least_edges or more (crease_line_sizes()). `normal`, `area`,
+// Side_mean_creases::least_edges or more (add_crease_lines()). `normal`, `area`,
 // `centroid`: the faces' raw unit normals, areas and centroids; `filtered`: their
 // filtered normals (which give the plane across the surface). By TBB's threads if
 // `parallel`, each edge on its own: the same result at any thread count. Returns the
@@ -146,16 +146,7 @@ std::size_t add_side_mean_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vp
       candidate[e] = 1;
     }
   });
-  const std::vector<std::size_t> line = crease_line_sizes(idx, candidate);
-  std::size_t added = 0;
-  for(std::size_t e = 0; e < ne; ++e)
-    if(line[e] >= Limits::least_edges)
-    {
-      is_crease[e] = 1;
-      angle[e] = (std::max)(angle[e], bend_of[e]);
-      ++added;
-    }
-  return added;
+  return add_crease_lines(idx, candidate, bend_of, Limits::least_edges, is_crease, angle);
 }
 
 } // namespace internal
