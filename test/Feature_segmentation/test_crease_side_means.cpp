@@ -41,18 +41,6 @@ Geometry geometry_of(const I::Mesh_indexing<SM>& idx)
   return g;
 }
 
-// Noise along the radial directions (uniform in +-amplitude) of a surface round the z axis.
-void add_radial_noise(fs_test::Soup& s, double amplitude)
-{
-  std::vector<std::array<double, 3> > radial;
-  for(const auto& p : s.points)
-  {
-    const double rho = std::hypot(p[0], p[1]);
-    radial.push_back({ p[0] / rho, p[1] / rho, 0. });
-  }
-  fs_test::add_noise_along(s, radial, amplitude);
-}
-
 std::size_t count(const std::vector<char>& marks)
 {
   std::size_t n = 0;
@@ -62,19 +50,11 @@ std::size_t count(const std::vector<char>& marks)
 
 BOOST_AUTO_TEST_CASE(cone_crease_under_heavy_noise)
 {
-  // A cylinder of radius 2 from z = 0 to 6 (24 rows) and a cone from radius 2 at z = 6
-  // to 1 at z = 8 (9 rows), 48 facets round: the cone bends from the cylinder by
-  // atan(1/2) = 26.6 degrees along the circle z = 6 (48 edges). Radial noise uniform in
-  // +-0.1 (a standard deviation of 0.058, 0.6% of the diagonal 9.8; 0.4 of the rows'
-  // height of 0.25).
-  const int around = 48, rows = 33, cylinder_rows = 24;
-  fs_test::Soup s = fs_test::parametric_grid(around, rows, true, false, [&](double u, double v) {
-    const double a = 2 * M_PI * u, j = v * rows;
-    const double t = j <= cylinder_rows ? 0. : (j - cylinder_rows) / (rows - cylinder_rows);
-    const double r = 2. - t, z = j <= cylinder_rows ? 0.25 * j : 6. + 2. * t;
-    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), z };
-  });
-  add_radial_noise(s, 0.1);
+  // The cylinder and cone of fs_test::cylinder_and_cone(), whose crease of 26.6 degrees
+  // runs along the circle z = 6 (48 edges). Radial noise uniform in +-0.1 (a standard
+  // deviation of 0.058, 0.6% of the diagonal 9.8; 0.4 of the rows' height of 0.25).
+  fs_test::Soup s = fs_test::cylinder_and_cone();
+  fs_test::add_radial_noise(s, 0.1);
   const SM m = fs_test::to_mesh<SM>(s);
   const I::Mesh_indexing<SM> idx(m);
   const Geometry g = geometry_of(idx);
@@ -142,9 +122,7 @@ BOOST_AUTO_TEST_CASE(thin_cylinder_under_heavy_noise_gets_none)
   // 0.51 rad = 29 degrees, well above the crease angle on every edge along the axis;
   // radial noise uniform in +-0.05 (0.25 of the rows' height). Over twice the radius the
   // bend doubles, over half of it it halves: no crease.
-  fs_test::Soup s = fs_test::cylinder(1., 6., 32, 30);
-  add_radial_noise(s, 0.05);
-  const SM m = fs_test::to_mesh<SM>(s);
+  const SM m = fs_test::to_mesh<SM>(fs_test::noisy_cylinder(1., 6., 32, 30, 0.05));
   const I::Mesh_indexing<SM> idx(m);
   const Geometry g = geometry_of(idx);
   BOOST_TEST_MESSAGE("raw roughness " << g.roughness);

@@ -134,25 +134,11 @@ BOOST_AUTO_TEST_CASE(crease_lines_are_the_candidates_sharing_vertices)
 
 BOOST_AUTO_TEST_CASE(narrow_filter_keeps_a_moderate_crease_under_light_noise)
 {
-  // A turned surface round the z axis, 48 facets round: a cylinder of radius 2 from
-  // z = 0 to 6 (24 rows) and a cone from radius 2 at z = 6 to 1 at z = 8 (9 rows), which
-  // bends from the cylinder by atan(1/2) = 26.6 degrees along the circle z = 6 (48
-  // edges); noise along the radial direction uniform in +-0.025 (a standard deviation of
-  // 0.0144, 0.15% of the diagonal 9.8).
-  const int around = 48, rows = 33, cylinder_rows = 24;
-  fs_test::Soup s = fs_test::parametric_grid(around, rows, true, false, [&](double u, double v) {
-    const double a = 2 * M_PI * u, j = v * rows;
-    const double t = j <= cylinder_rows ? 0. : (j - cylinder_rows) / (rows - cylinder_rows);
-    const double r = 2. - t, z = j <= cylinder_rows ? 0.25 * j : 6. + 2. * t;
-    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), z };
-  });
-  std::vector<std::array<double, 3> > radial;
-  for(const auto& p : s.points)
-  {
-    const double rho = std::hypot(p[0], p[1]);
-    radial.push_back({ p[0] / rho, p[1] / rho, 0. });
-  }
-  fs_test::add_noise_along(s, radial, 0.025);
+  // The cylinder and cone of fs_test::cylinder_and_cone(), whose crease of 26.6 degrees
+  // runs along the circle z = 6 (48 edges); noise along the radial direction uniform in
+  // +-0.025 (a standard deviation of 0.0144, 0.15% of the diagonal 9.8).
+  fs_test::Soup s = fs_test::cylinder_and_cone();
+  fs_test::add_radial_noise(s, 0.025);
   const SM m = fs_test::to_mesh<SM>(s);
   const I::Mesh_indexing<SM> idx(m);
   const Geometry g = geometry_of(idx);

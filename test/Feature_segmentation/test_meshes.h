@@ -226,19 +226,41 @@ inline void add_noise_along(Soup& s, const std::vector<std::array<double, 3> >& 
   }
 }
 
+// Noise along the radial directions of a surface round the z axis, by add_noise_along()
+// of `amplitude`.
+inline void add_radial_noise(Soup& s, double amplitude)
+{
+  std::vector<std::array<double, 3> > radial;
+  for(const auto& p : s.points)
+  {
+    const double rho = std::hypot(p[0], p[1]);
+    radial.push_back({ p[0] / rho, p[1] / rho, 0. });
+  }
+  add_noise_along(s, radial, amplitude);
+}
+
 // cylinder(r, hgt, n_around, n_along) with every vertex moved along its radial direction
 // by add_noise_along() of `amplitude`.
 inline Soup noisy_cylinder(double r, double hgt, int n_around, int n_along, double amplitude)
 {
   Soup s = cylinder(r, hgt, n_around, n_along);
-  std::vector<std::array<double, 3> > normal;
-  for(const auto& p : s.points)
-  {
-    const double rho = std::hypot(p[0], p[1]);
-    normal.push_back({ p[0] / rho, p[1] / rho, 0. });
-  }
-  add_noise_along(s, normal, amplitude);
+  add_radial_noise(s, amplitude);
   return s;
+}
+
+// A turned surface round the z axis, 48 facets round: a cylinder of radius 2 from z = 0
+// to 6 (24 rows of 0.25) and a cone from radius 2 at z = 6 to 1 at z = 8 (9 rows), which
+// bends from the cylinder by atan(1/2) = 26.6 degrees along the circle z = 6 (48 edges);
+// diagonal 9.8.
+inline Soup cylinder_and_cone()
+{
+  const int around = 48, rows = 33, cylinder_rows = 24;
+  return parametric_grid(around, rows, true, false, [&](double u, double v) {
+    const double a = 2 * M_PI * u, j = v * rows;
+    const double t = j <= cylinder_rows ? 0. : (j - cylinder_rows) / (rows - cylinder_rows);
+    const double r = 2. - t, z = j <= cylinder_rows ? 0.25 * j : 6. + 2. * t;
+    return std::array<double, 3>{ r * std::cos(a), r * std::sin(a), z };
+  });
 }
 
 // A square [-a, a]^2 in the plane z = 0.
