@@ -1,20 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Moderate creases of heavily noisy meshes, from the mean raw normals on the two sides of
-// an edge. Under noise of 0.3% of the diagonal a face's normal is off by some 20 to 30
-// degrees, as much as a crease of 25 to 35 degrees (a cone meeting a cylinder, a hopper's
-// walls): the bilateral filter of crease_detection.h weighs a neighbour across such a
-// crease nearly as much as a noisy one beside it, and over its rounds it wipes the crease
-// out (the cone of ABC part 3817: 31.6 degrees clean, 2 to 10 degrees between the
-// filtered normals of the two sides). Averaged over a few dozen faces, the raw normals
-// keep it: the area-weighted mean normals of the faces on either side of an edge, within
-// a few edge lengths of its midpoint, bend by the crease's angle (28 to 35 degrees on
-// 3817), while the noise left in them is a few degrees. What else bends them:
+// Moderate creases of heavily noisy meshes, from the mean raw normals on the two sides
+// of an edge. Under noise of 0.3% of the diagonal a face's normal is off by 17 to 44
+// degrees (the median over a development part's faces; 28 on ABC part 3817), as much as
+// a crease of 25 to 35 degrees (a cone meeting a cylinder, a hopper's walls): the
+// bilateral filter of crease_detection.h weighs a neighbour across such a crease nearly
+// as much as a noisy one beside it, and over its rounds it wipes the crease out (the
+// cone of ABC part 3817 at 0.3% noise: 31.6 degrees clean, 5 to 10 degrees between the
+// filtered normals of its two sides). Averaged over a few dozen faces, the raw normals
+// keep it: the area-weighted mean normals of the faces on either side of an edge,
+// within a few edge lengths of its midpoint, bend by the crease's angle (28 to 35
+// degrees on 3817), while the noise left in them is a few degrees. What else bends
+// them:
 // - a curved face: its bend grows with the radius of the disk (twice the radius, twice
-//   the bend), a crease's does not; and it shrinks with it, a crease's does not either;
+//   the bend), a crease's does not;
+// - a bend farther off (a blend or crease a few edges away): the disk of half the radius
+//   sees little of it, while a crease at the edge bends it as much;
 // - a crease nearby: the sides stop at the creases already found;
 // - the edges next to a crease, whose disks still straddle it: only the edge where the
 //   bend peaks across the line is kept.
-// The edges that pass all three and join into a long line of their own become creases.
+// The edges that pass these tests and join into a long line of their own become creases.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_SIDE_MEANS_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_SIDE_MEANS_H
@@ -48,8 +52,9 @@ struct Side_mean_creases
   // the bend must peak across the line: at least the bend of the disks moved by this much
   // to either side
   static constexpr double ridge_offset = 1.;
-  // a crease, not a curved face: the bend over twice the radius is at most `wider` times
-  // the bend, and over half the radius at least `narrower` times it
+  // a crease at the edge: the bend over twice the radius is at most `wider` times the
+  // bend (a curved face's doubles), and over half the radius at least `narrower` times
+  // it (a bend farther off fades)
   static constexpr double wider = 1.5;
   static constexpr double narrower = 0.4;
   // the fewest edges of a line of such edges that is kept (as the narrow filter's)
