@@ -1,8 +1,9 @@
 // The side-mean creases of heavily noisy meshes (crease_side_means.h): on a noisy turned
 // surface the cone's crease of 26.6 degrees, which the bilateral filter wipes out, is
-// found along its circle, with detours of a few rows; on a noisy thin cylinder, whose curvature
-// alone bends the two sides' mean normals by 29 degrees, nothing is added; on a roof the
-// ridge is found, and once it is a crease it bounds the sides.
+// found along its circle, with detours of a few rows; on a noisy thin cylinder, whose
+// curvature alone bends the two sides' mean normals by 29 degrees, nothing is added; on
+// a roof the ridge is found, and once it is a crease it bounds the sides; the same
+// creases at any thread count.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
@@ -10,11 +11,16 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include "crease_test_geometry.h"
 #include "test_meshes.h"
 
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace FS = CGAL::Feature_segmentation;
@@ -196,5 +202,36 @@ BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
   BOOST_TEST(with == 0u);
   BOOST_TEST(count(marked) == 40u);
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// Each edge is tested on its own, in ranges of at least 4,096 edges that TBB's threads
+// share: the noisy cylinder and cone (4,800 edges, two ranges) gets the same creases and
+// bends at 1, 2 and 8 threads as in one sequential pass.
+BOOST_AUTO_TEST_CASE(the_same_creases_at_any_thread_count)
+{
+  fs_test::Soup s = fs_test::cylinder_and_cone();
+  fs_test::add_radial_noise(s, 0.1);
+  const SM m = fs_test::to_mesh<SM>(s);
+  const I::Mesh_indexing<SM> idx(m);
+  const Geometry g = geometry_of(idx);
+  BOOST_TEST(idx.number_of_edges() > 4096u);
+  auto run = [&](bool parallel) {
+    std::vector<char> is_crease(idx.number_of_edges(), 0);
+    std::vector<double> angle(idx.number_of_edges(), 0.);
+    I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid, g.filtered, 20.,
+                             is_crease, angle, parallel);
+    return std::make_pair(is_crease, angle);
+  };
+  const auto sequential = run(false);
+  BOOST_TEST(count(sequential.first) > 0u);
+  for(int threads : { 1, 2, 8 })
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const auto parallel = run(true);
+    BOOST_TEST((parallel.first == sequential.first), threads << " threads");
+    BOOST_TEST((parallel.second == sequential.second), threads << " threads");
+  }
+}
+#endif
 
 BOOST_AUTO_TEST_SUITE_END()
