@@ -59,9 +59,7 @@ BOOST_AUTO_TEST_CASE(cone_crease_under_heavy_noise)
   // The cylinder and cone of fs_test::cylinder_and_cone(), whose crease of 26.6 degrees
   // runs along the circle z = 6 (48 edges). Radial noise uniform in +-0.1 (a standard
   // deviation of 0.058, 0.6% of the diagonal 9.8; 0.4 of the rows' height of 0.25).
-  fs_test::Soup s = fs_test::cylinder_and_cone();
-  fs_test::add_radial_noise(s, 0.1);
-  const SM m = fs_test::to_mesh<SM>(s);
+  const SM m = fs_test::to_mesh<SM>(fs_test::noisy_cylinder_and_cone(0.1));
   const I::Mesh_indexing<SM> idx(m);
   const Geometry g = geometry_of(idx);
   BOOST_TEST_MESSAGE("raw roughness " << g.roughness);
@@ -109,14 +107,11 @@ BOOST_AUTO_TEST_CASE(cone_crease_under_heavy_noise)
   BOOST_TEST(farthest <= 1.05);
 
   // and so do the creases of the whole detection
-  std::vector<double> detected_angle;
-  bool clean = true, cad = false;
-  const std::vector<char> detected =
-    I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, detected_angle, clean, cad);
+  const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
   std::size_t detected_on = 0;
-  for(std::size_t e = 0; e < detected.size(); ++e)
-    if(detected[e] && within(e, 0.05)) ++detected_on;
-  BOOST_TEST(!clean);
+  for(std::size_t e = 0; e < detected.is_crease.size(); ++e)
+    if(detected.is_crease[e] && within(e, 0.05)) ++detected_on;
+  BOOST_TEST(!detected.clean);
   BOOST_TEST(detected_on >= 42u);
 }
 
@@ -209,9 +204,7 @@ BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
 // bends at 1, 2 and 8 threads as in one sequential pass.
 BOOST_AUTO_TEST_CASE(the_same_creases_at_any_thread_count)
 {
-  fs_test::Soup s = fs_test::cylinder_and_cone();
-  fs_test::add_radial_noise(s, 0.1);
-  const SM m = fs_test::to_mesh<SM>(s);
+  const SM m = fs_test::to_mesh<SM>(fs_test::noisy_cylinder_and_cone(0.1));
   const I::Mesh_indexing<SM> idx(m);
   const Geometry g = geometry_of(idx);
   BOOST_TEST(idx.number_of_edges() > 4096u);

@@ -137,9 +137,7 @@ BOOST_AUTO_TEST_CASE(narrow_filter_keeps_a_moderate_crease_under_light_noise)
   // The cylinder and cone of fs_test::cylinder_and_cone(), whose crease of 26.6 degrees
   // runs along the circle z = 6 (48 edges); noise along the radial direction uniform in
   // +-0.025 (a standard deviation of 0.0144, 0.15% of the diagonal 9.8).
-  fs_test::Soup s = fs_test::cylinder_and_cone();
-  fs_test::add_radial_noise(s, 0.025);
-  const SM m = fs_test::to_mesh<SM>(s);
+  const SM m = fs_test::to_mesh<SM>(fs_test::noisy_cylinder_and_cone(0.025));
   const I::Mesh_indexing<SM> idx(m);
   const Geometry g = geometry_of(idx);
   BOOST_TEST_MESSAGE("raw roughness " << g.roughness);
@@ -191,14 +189,11 @@ BOOST_AUTO_TEST_CASE(narrow_filter_keeps_a_moderate_crease_under_light_noise)
   BOOST_TEST(off <= 3u);
   BOOST_TEST(far == 0u);
   // and so do the creases of the whole detection
-  std::vector<double> detected_angle;
-  bool clean = true, cad = false;
-  const std::vector<char> detected =
-    I::detect_creases(idx, get(CGAL::vertex_point, m), 20., 40, true, detected_angle, clean, cad);
+  const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
   std::size_t detected_on = 0;
-  for(std::size_t e = 0; e < detected.size(); ++e)
-    if(detected[e] && on_crease(e)) ++detected_on;
-  BOOST_TEST(!clean);
+  for(std::size_t e = 0; e < detected.is_crease.size(); ++e)
+    if(detected.is_crease[e] && on_crease(e)) ++detected_on;
+  BOOST_TEST(!detected.clean);
   BOOST_TEST(detected_on >= 42u);
 }
 

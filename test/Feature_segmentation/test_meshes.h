@@ -263,6 +263,15 @@ inline Soup cylinder_and_cone()
   });
 }
 
+// cylinder_and_cone() with every vertex moved along its radial direction by
+// add_noise_along() of `amplitude`.
+inline Soup noisy_cylinder_and_cone(double amplitude)
+{
+  Soup s = cylinder_and_cone();
+  add_radial_noise(s, amplitude);
+  return s;
+}
+
 // A square [-a, a]^2 in the plane z = 0.
 inline Soup plane(double a, int n)
 {
