@@ -2,8 +2,9 @@
 // surface the cone's crease of 26.6 degrees, which the bilateral filter wipes out, is
 // found along its circle, with detours of a few rows; on a noisy thin cylinder, whose
 // curvature alone bends the two sides' mean normals by 29 degrees, nothing is added; on
-// a roof the ridge is found, and once it is a crease it bounds the sides; the same
-// creases at any thread count.
+// a roof the ridge is found, and once it is a crease it bounds the sides; a fillet's
+// middle line is no crease at the lightly noisy meshes' ratio over half the radius, a
+// ridge of the same angle is; the same creases at any thread count.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
@@ -19,6 +20,8 @@
 #include "test_meshes.h"
 
 #include <array>
+#include <functional>
+#include <tuple>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -196,6 +199,71 @@ BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
                                                     g.normal, 20., marked, angle2);
   BOOST_TEST(with == 0u);
   BOOST_TEST(count(marked) == 40u);
+}
+
+BOOST_AUTO_TEST_CASE(a_fillet_is_no_crease_on_a_lightly_noisy_mesh)
+{
+  // Two planes 60 degrees apart (slopes -+tan 30 degrees) joined by a noiseless fillet
+  // whose normal turns evenly with x over |x| <= a, on the grid of the roof below (40 x 40
+  // cells of 0.05 over [-1, 1]^2). Its median edge length is the cells' diagonal run along
+  // x on the slopes, 0.05 / cos 30, so the disk's radius is R = 0.173; the fillet is 2a =
+  // 1.4 R wide. Across its middle line x = 0 the sides' mean normals bend by about 34
+  // degrees, the disks moved to either side less, the disk of twice the radius 1.36 times
+  // as much (a wider bend than the 1.5 of a face of even curvature), and the disk of half
+  // the radius 0.53 times as much (a crease between flat sides: all of it). The heavy-noise
+  // ratio 0.4 takes the middle line for a crease (and edges of its faces beside it); the
+  // light-noise ratio 0.65 adds nothing, and it still finds a ridge of the same 60 degrees
+  // (z = |x| tan 30): its 40 edges, and beside them only edges of its faces.
+  const double slope = std::tan(M_PI / 6), a = 0.7 * 3 * 0.05 / std::cos(M_PI / 6);
+  auto fillet = [&](double x) {
+    const double t = std::abs(x);
+    // z' = tan(30 degrees * t / a) inside, tan 30 outside
+    const double k = (M_PI / 6) / a;
+    return t <= a ? -std::log(std::cos(k * t)) / k : -std::log(std::cos(M_PI / 6)) / k + (t - a) * slope;
+  };
+  auto run = [](const fs_test::Soup& s, double narrower) {
+    const SM m = fs_test::to_mesh<SM>(s);
+    const I::Mesh_indexing<SM> idx(m);
+    const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+    std::vector<char> is_crease(idx.number_of_edges(), 0);
+    std::vector<double> angle(idx.number_of_edges(), 0.);
+    I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid, g.normal, 20., is_crease,
+                             angle, false, narrower);
+    std::size_t middle = 0, other = 0;
+    double farthest = 0.; // the largest |x| of the other edges' ends
+    for(std::size_t e = 0; e < is_crease.size(); ++e)
+    {
+      if(!is_crease[e]) continue;
+      const auto h = halfedge(idx.edge_at(e), m);
+      const double x0 = std::abs(m.point(source(h, m)).x()), x1 = std::abs(m.point(target(h, m)).x());
+      if(x0 < 1e-9 && x1 < 1e-9) ++middle;
+      else
+      {
+        ++other;
+        farthest = (std::max)(farthest, (std::max)(x0, x1));
+      }
+    }
+    return std::make_tuple(middle, other, farthest);
+  };
+  auto grid = [](const std::function<double(double)>& z) {
+    return fs_test::parametric_grid(40, 40, false, false, [&](double u, double v) {
+      const double x = 2 * u - 1, y = 2 * v - 1;
+      return std::array<double, 3>{ x, y, z(x) };
+    });
+  };
+  const fs_test::Soup filleted = grid(fillet), ridged = grid([&](double x) { return std::abs(x) * slope; });
+  const auto heavy = run(filleted, I::Side_mean_creases::narrower);
+  const auto light = run(filleted, I::Side_mean_creases::narrower_light);
+  const auto ridge = run(ridged, I::Side_mean_creases::narrower_light);
+  BOOST_TEST_MESSAGE("fillet: " << std::get<0>(heavy) << " + " << std::get<1>(heavy) << " edges at ratio 0.4 (within "
+                     << std::get<2>(heavy) << "), " << std::get<0>(light) << " + " << std::get<1>(light)
+                     << " at 0.65; ridge: " << std::get<0>(ridge) << " + " << std::get<1>(ridge) << " (within "
+                     << std::get<2>(ridge) << ")");
+  BOOST_TEST(std::get<0>(heavy) == 40u);
+  BOOST_TEST(std::get<2>(heavy) <= 0.05 + 1e-9);
+  BOOST_TEST(std::get<0>(light) + std::get<1>(light) == 0u);
+  BOOST_TEST(std::get<0>(ridge) == 40u);
+  BOOST_TEST(std::get<2>(ridge) <= 0.05 + 1e-9);
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

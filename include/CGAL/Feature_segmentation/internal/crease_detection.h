@@ -226,7 +226,9 @@ constexpr double crease_rough_plane_share = 0.2;
 // are staircase steps: crease_staircase.h), and that pass the gap test
 // (keep_creases_with_gap), marked 1, and on a lightly noisy one (raw roughness from
 // Crease_gap::raw_roughness to Crease_staircase::roughness) those of a narrower filter
-// (add_narrow_filter_creases, crease_narrow_filter.h), marked 1; on a clean
+// (add_narrow_filter_creases, crease_narrow_filter.h), and on every noisy one (raw
+// roughness above Crease_gap::raw_roughness) those of the mean raw normals on the two
+// sides of an edge (add_side_mean_creases, crease_side_means.h), marked 1; on a clean
 // tessellation (raw roughness at most crease_filter_roughness) and if `tangent`, the
 // curvature discontinuities
 // (mark_tangent_discontinuities), marked 2; on a noisy one (raw roughness above
@@ -321,12 +323,16 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   }
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
                         clean ? Crease_gap::strong_angle : 360., planar);
-  // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs,
-  // a heavily noisy one those that it wipes out
+  // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs
+  // and those that its coarse facets hide, a heavily noisy one those that it wipes out
   if(!smooth && filtered && raw_roughness < Crease_staircase::roughness)
+  {
     add_narrow_filter_creases(idx, vpm, normal, raw_roughness, *rings,
                               noisy_filter_rounds(raw_roughness, filter_iterations), crease_angle, is_crease, angle,
                               parallel);
+    add_side_mean_creases(idx, vpm, normal, area, centroid, filtered_normal, crease_angle, is_crease, angle, parallel,
+                          Side_mean_creases::narrower_light);
+  }
   else if(!smooth && filtered)
     add_side_mean_creases(idx, vpm, normal, area, centroid, filtered_normal, crease_angle, is_crease, angle, parallel);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);

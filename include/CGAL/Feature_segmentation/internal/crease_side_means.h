@@ -19,6 +19,13 @@
 // - the edges next to a crease, whose disks still straddle it: only the edge where the
 //   bend peaks across the line is kept.
 // The edges that pass these tests and join into a long line of their own become creases.
+// A lightly noisy mesh gets them too, next to the narrow filter's creases
+// (crease_narrow_filter.h): on a coarse tessellation (a cylinder of 16 facets around) the
+// facets bend by 22.5 degrees, nearly as much as a cone's crease of 27 to 34, and the
+// narrow filter cannot tell them apart, while the side means average the facets out.
+// There the narrower disk's mean normals carry little noise, so a crease must keep more
+// of its bend over half the radius than on a heavily noisy mesh: a fillet's middle does
+// not.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_SIDE_MEANS_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_SIDE_MEANS_H
@@ -57,6 +64,10 @@ struct Side_mean_creases
   // it (a bend farther off fades)
   static constexpr double wider = 1.5;
   static constexpr double narrower = 0.4;
+  // the same over half the radius on a lightly noisy mesh, whose half disks are nearly
+  // free of noise: a crease between flat sides keeps all of its bend there, a face of
+  // even curvature half of it, a fillet as wide as 1.2 to 1.6 radii 0.53 to 0.56
+  static constexpr double narrower_light = 0.65;
   // the fewest edges of a line of such edges that is kept (as the narrow filter's)
   static constexpr std::size_t least_edges = Narrow_filter_creases::least_edges;
 };
@@ -70,15 +81,18 @@ struct Side_mean_creases
 // curved face's does nor fade over a narrower one, and such edges join into a line of
 // Side_mean_creases::least_edges or more (add_crease_lines()). `normal`, `area`,
 // `centroid`: the faces' raw unit normals, areas and centroids; `filtered`: their
-// filtered normals (which give the plane across the surface). By TBB's threads if
-// `parallel`, each edge on its own: the same result at any thread count. Returns the
-// number of edges added.
+// filtered normals (which give the plane across the surface); `narrower`: the least
+// ratio of the bend over half the radius to the bend (Side_mean_creases::narrower on a
+// heavily noisy mesh, Side_mean_creases::narrower_light on a lightly noisy one). By TBB's
+// threads if `parallel`, each edge on its own: the same result at any thread count.
+// Returns the number of edges added.
 template <typename TriangleMesh, typename VPM>
 std::size_t add_side_mean_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
                                   const std::vector<Eigen::Vector3d>& normal, const std::vector<double>& area,
                                   const std::vector<Eigen::Vector3d>& centroid,
                                   const std::vector<Eigen::Vector3d>& filtered, double crease_angle,
-                                  std::vector<char>& is_crease, std::vector<double>& angle, bool parallel = false)
+                                  std::vector<char>& is_crease, std::vector<double>& angle, bool parallel = false,
+                                  double narrower = Side_mean_creases::narrower)
 {
   typedef Side_mean_creases Limits;
   typedef std::uint32_t Id; // detect_creases() has checked that 3 ids per face fit
@@ -143,7 +157,7 @@ std::size_t add_side_mean_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vp
       reach(Id(f), Id(g), m, radius + offset, Id(2 * e));
       const double b = bend(m, s, radius);
       if(b < crease_angle || bend(m + offset * s, s, radius) > b || bend(m - offset * s, s, radius) > b ||
-         bend(m, s, radius / 2) < Limits::narrower * b)
+         bend(m, s, radius / 2) < narrower * b)
         continue;
       reach(Id(f), Id(g), m, 2 * radius, Id(2 * e + 1));
       if(bend(m, s, 2 * radius) > Limits::wider * b) continue;
