@@ -57,6 +57,38 @@ std::size_t count(const std::vector<char>& marks)
   return n;
 }
 
+// The side-mean creases of the mesh at the crease angle of 20 degrees: the marks of
+// `is_crease` (none if empty) with the edges added, their bends, and how many were added.
+// `across`: the normals that give the plane across the surface.
+struct Side_means
+{
+  std::vector<char> is_crease;
+  std::vector<double> angle;
+  std::size_t added = 0;
+};
+
+Side_means side_means(const SM& m, const I::Mesh_indexing<SM>& idx, const fs_test::Face_geometry& g,
+                      const std::vector<Eigen::Vector3d>& across, std::vector<char> is_crease = {},
+                      bool parallel = false, double narrower = I::Side_mean_creases::narrower)
+{
+  Side_means r;
+  r.is_crease = is_crease.empty() ? std::vector<char>(idx.number_of_edges(), 0) : std::move(is_crease);
+  r.angle.assign(idx.number_of_edges(), 0.);
+  r.added = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid, across, 20.,
+                                     r.is_crease, r.angle, parallel, narrower);
+  return r;
+}
+
+// A grid of 40 x 40 cells of 0.05 over [-1, 1]^2 (one diagonal per cell) lifted to
+// z = profile(x).
+fs_test::Soup profile_grid(const std::function<double(double)>& profile)
+{
+  return fs_test::parametric_grid(40, 40, false, false, [&](double u, double v) {
+    const double x = 2 * u - 1, y = 2 * v - 1;
+    return std::array<double, 3>{ x, y, profile(x) };
+  });
+}
+
 BOOST_AUTO_TEST_CASE(cone_crease_under_heavy_noise)
 {
   // The cylinder and cone of fs_test::cylinder_and_cone(), whose crease of 26.6 degrees
@@ -78,10 +110,7 @@ BOOST_AUTO_TEST_CASE(cone_crease_under_heavy_noise)
     if(filtered_angle[e] >= 20. && within(e, 0.05)) ++filtered_on;
   BOOST_TEST(filtered_on == 0u);
 
-  std::vector<char> is_crease(idx.number_of_edges(), 0);
-  std::vector<double> angle(idx.number_of_edges(), 0.);
-  const std::size_t added = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
-                                                     g.filtered, 20., is_crease, angle);
+  const auto [is_crease, angle, added] = side_means(m, idx, g, g.filtered);
   std::size_t on = 0, one_row = 0, two_rows = 0, far = 0;
   double least_on = 180., farthest = 0.;
   for(std::size_t e = 0; e < is_crease.size(); ++e)
@@ -131,29 +160,22 @@ BOOST_AUTO_TEST_CASE(thin_cylinder_under_heavy_noise_gets_none)
   const Geometry g = geometry_of(idx);
   BOOST_TEST_MESSAGE("raw roughness " << g.roughness);
   BOOST_TEST(g.roughness >= I::Crease_staircase::roughness);
-  std::vector<char> is_crease(idx.number_of_edges(), 0);
-  std::vector<double> angle(idx.number_of_edges(), 0.);
-  const std::size_t added = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
-                                                     g.filtered, 20., is_crease, angle);
-  BOOST_TEST(added == 0u);
-  BOOST_TEST(count(is_crease) == 0u);
+  const Side_means r = side_means(m, idx, g, g.filtered);
+  BOOST_TEST(r.added == 0u);
+  BOOST_TEST(count(r.is_crease) == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
 {
-  // A noiseless roof: two planes meeting along the line x = 0 of a grid (z = |x| / 2 over
-  // [-1, 1]^2, 40 x 40 cells of 0.05, one diagonal per cell), whose normals are
-  // 2 atan(1/2) = 53.13 degrees apart. Without creases, the ridge's 40 edges bend by
-  // exactly that much (their
-  // disks split at the ridge; those of the ends are cut by the border on both sides
-  // alike) and are added; the edges parallel to it one column away are not (the disk
-  // moved onto the ridge bends more), and of the rest only a few diagonals of the
-  // ridge's faces are (their split is oblique), all within one column of it. With the ridge marked a crease, the sides stop at it: no edge is added.
-  fs_test::Soup s = fs_test::parametric_grid(40, 40, false, false, [](double u, double v) {
-    const double x = 2 * u - 1, y = 2 * v - 1;
-    return std::array<double, 3>{ x, y, 0.5 * std::abs(x) };
-  });
-  const SM m = fs_test::to_mesh<SM>(s);
+  // A noiseless roof: two planes meeting along the line x = 0 of a grid (z = |x| / 2
+  // over [-1, 1]^2, 40 x 40 cells of 0.05, one diagonal per cell), whose normals are 2
+  // atan(1/2) = 53.13 degrees apart. Without creases, the ridge's 40 edges bend by
+  // exactly that much (their disks split at the ridge; those of the ends are cut by the
+  // border on both sides alike) and are added; the edges parallel to it one column away
+  // are not (the disk moved onto the ridge bends more), and of the rest only a few
+  // diagonals of the ridge's faces are (their split is oblique), all within one column
+  // of it. With the ridge marked a crease, the sides stop at it: no edge is added.
+  const SM m = fs_test::to_mesh<SM>(profile_grid([](double x) { return 0.5 * std::abs(x); }));
   const I::Mesh_indexing<SM> idx(m);
   const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
   auto within = [&](std::size_t e, double dx) {
@@ -164,10 +186,7 @@ BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
     const auto h = halfedge(idx.edge_at(e), m);
     return std::abs(m.point(source(h, m)).x() - m.point(target(h, m)).x()) < 1e-9;
   };
-  std::vector<char> is_crease(idx.number_of_edges(), 0);
-  std::vector<double> angle(idx.number_of_edges(), 0.);
-  const std::size_t added = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
-                                                     g.normal, 20., is_crease, angle);
+  const auto [is_crease, angle, added] = side_means(m, idx, g, g.normal);
   std::size_t ridge = 0, ridge_added = 0, beside = 0;
   for(std::size_t e = 0; e < is_crease.size(); ++e)
   {
@@ -194,20 +213,18 @@ BOOST_AUTO_TEST_CASE(a_crease_found_bounds_the_sides)
 
   std::vector<char> marked(idx.number_of_edges(), 0);
   for(std::size_t e = 0; e < marked.size(); ++e) marked[e] = within(e, 1e-9) ? 1 : 0;
-  std::vector<double> angle2(idx.number_of_edges(), 0.);
-  const std::size_t with = I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
-                                                    g.normal, 20., marked, angle2);
-  BOOST_TEST(with == 0u);
-  BOOST_TEST(count(marked) == 40u);
+  const Side_means with = side_means(m, idx, g, g.normal, marked);
+  BOOST_TEST(with.added == 0u);
+  BOOST_TEST(count(with.is_crease) == 40u);
 }
 
 BOOST_AUTO_TEST_CASE(a_fillet_is_no_crease_on_a_lightly_noisy_mesh)
 {
   // Two planes 60 degrees apart (slopes -+tan 30 degrees) joined by a noiseless fillet
-  // whose normal turns evenly with x over |x| <= a, on the grid of the roof below (40 x 40
-  // cells of 0.05 over [-1, 1]^2). Its median edge length is the cells' diagonal run along
-  // x on the slopes, 0.05 / cos 30, so the disk's radius is R = 0.173; the fillet is 2a =
-  // 1.4 R wide. Across its middle line x = 0 the sides' mean normals bend by about 34
+  // whose normal turns evenly with x over |x| <= a, on the grid of the roof above (40 x 40
+  // cells of 0.05 over [-1, 1]^2). Its median edge length is that of the edges along x on
+  // the slopes, 0.05 / cos 30, so the disk's radius is R = 0.173; the fillet is 2a = 1.4 R
+  // wide. Across its middle line x = 0 the sides' mean normals bend by about 34
   // degrees, the disks moved to either side less, the disk of twice the radius 1.36 times
   // as much (a wider bend than the 1.5 of a face of even curvature), and the disk of half
   // the radius 0.53 times as much (a crease between flat sides: all of it). The heavy-noise
@@ -225,10 +242,7 @@ BOOST_AUTO_TEST_CASE(a_fillet_is_no_crease_on_a_lightly_noisy_mesh)
     const SM m = fs_test::to_mesh<SM>(s);
     const I::Mesh_indexing<SM> idx(m);
     const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
-    std::vector<char> is_crease(idx.number_of_edges(), 0);
-    std::vector<double> angle(idx.number_of_edges(), 0.);
-    I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid, g.normal, 20., is_crease,
-                             angle, false, narrower);
+    const std::vector<char> is_crease = side_means(m, idx, g, g.normal, {}, false, narrower).is_crease;
     std::size_t middle = 0, other = 0;
     double farthest = 0.; // the largest |x| of the other edges' ends
     for(std::size_t e = 0; e < is_crease.size(); ++e)
@@ -245,13 +259,7 @@ BOOST_AUTO_TEST_CASE(a_fillet_is_no_crease_on_a_lightly_noisy_mesh)
     }
     return std::make_tuple(middle, other, farthest);
   };
-  auto grid = [](const std::function<double(double)>& z) {
-    return fs_test::parametric_grid(40, 40, false, false, [&](double u, double v) {
-      const double x = 2 * u - 1, y = 2 * v - 1;
-      return std::array<double, 3>{ x, y, z(x) };
-    });
-  };
-  const fs_test::Soup filleted = grid(fillet), ridged = grid([&](double x) { return std::abs(x) * slope; });
+  const fs_test::Soup filleted = profile_grid(fillet), ridged = profile_grid([&](double x) { return std::abs(x) * slope; });
   const auto heavy = run(filleted, I::Side_mean_creases::narrower);
   const auto light = run(filleted, I::Side_mean_creases::narrower_light);
   const auto ridge = run(ridged, I::Side_mean_creases::narrower_light);
@@ -277,11 +285,8 @@ BOOST_AUTO_TEST_CASE(the_same_creases_at_any_thread_count)
   const Geometry g = geometry_of(idx);
   BOOST_TEST(idx.number_of_edges() > 4096u);
   auto run = [&](bool parallel) {
-    std::vector<char> is_crease(idx.number_of_edges(), 0);
-    std::vector<double> angle(idx.number_of_edges(), 0.);
-    I::add_side_mean_creases(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid, g.filtered, 20.,
-                             is_crease, angle, parallel);
-    return std::make_pair(is_crease, angle);
+    const Side_means r = side_means(m, idx, g, g.filtered, {}, parallel);
+    return std::make_pair(r.is_crease, r.angle);
   };
   const auto sequential = run(false);
   BOOST_TEST(count(sequential.first) > 0u);

@@ -325,16 +325,16 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
                         clean ? Crease_gap::strong_angle : 360., planar);
   // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs
   // and those that its coarse facets hide, a heavily noisy one those that it wipes out
-  if(!smooth && filtered && raw_roughness < Crease_staircase::roughness)
+  if(!smooth && filtered)
   {
-    add_narrow_filter_creases(idx, vpm, normal, raw_roughness, *rings,
-                              noisy_filter_rounds(raw_roughness, filter_iterations), crease_angle, is_crease, angle,
-                              parallel);
+    const bool lightly_noisy = raw_roughness < Crease_staircase::roughness;
+    if(lightly_noisy)
+      add_narrow_filter_creases(idx, vpm, normal, raw_roughness, *rings,
+                                noisy_filter_rounds(raw_roughness, filter_iterations), crease_angle, is_crease, angle,
+                                parallel);
     add_side_mean_creases(idx, vpm, normal, area, centroid, filtered_normal, crease_angle, is_crease, angle, parallel,
-                          Side_mean_creases::narrower_light);
+                          lightly_noisy ? Side_mean_creases::narrower_light : Side_mean_creases::narrower);
   }
-  else if(!smooth && filtered)
-    add_side_mean_creases(idx, vpm, normal, area, centroid, filtered_normal, crease_angle, is_crease, angle, parallel);
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   if(planes)
     mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, smooth ? crease_rough_plane_share : 0.);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Moderate creases of heavily noisy meshes, from the mean raw normals on the two sides
-// of an edge. Under noise of 0.3% of the diagonal a face's normal is off by 17 to 44
+// Moderate creases of noisy meshes, from the mean raw normals on the two sides of an
+// edge. Under noise of 0.3% of the diagonal a face's normal is off by 17 to 44
 // degrees (the median over a development part's faces; 28 on ABC part 3817), as much as
 // a crease of 25 to 35 degrees (a cone meeting a cylinder, a hopper's walls): the
 // bilateral filter of crease_detection.h weighs a neighbour across such a crease nearly
