@@ -67,6 +67,7 @@ struct Side_mean_creases
   // the same over half the radius on a lightly noisy mesh, whose half disks are nearly
   // free of noise: a crease between flat sides keeps all of its bend there, a face of
   // even curvature half of it, a fillet as wide as 1.2 to 1.6 radii 0.53 to 0.56
+  // (computed over continuous disks; test_crease_side_means.cpp checks one on a mesh)
   static constexpr double narrower_light = 0.65;
   // the fewest edges of a line of such edges that is kept, chosen among 8, 10, 11, 12, 14
   // and 16 (the narrow filter's): with 14 the development and generated means at 0.1%
