@@ -81,7 +81,8 @@ def cad_rows():
     return name, read_csv(name)
 
 
-def quality_parts(set_name, label):
+def quality_parts(set_name, label, noisy=()):
+    """The clean scores of the parts of `set_name`, then the defaults' at each noise level of `noisy`."""
     name, rows = cad_rows()
     parts = []
     for r in rows:
@@ -89,22 +90,33 @@ def quality_parts(set_name, label):
             parts.append(r)
     if not parts:
         raise TableError(f"{name}: no clean rows of the set {set_name}")
+
+    def row(part, level, method):
+        return next((r for r in rows if r["set"] == set_name and r["part"] == part and number(r["noise"]) == level
+                     and r["method"] == method), None)
+
     body = []
     for p in parts:
-        cells = [label(p["part"]), count(p["faces"]), p["true_patches"], fixed(p["tangent_share"])]
+        cells = [label(p["part"]), count(p["faces"]), p["true_patches"], fixed(p["tangent_share"]),
+                 fixed(p["band_share"])]
         for method, _ in CAD_METHODS:
-            r = next((r for r in rows if r["set"] == set_name and r["part"] == p["part"] and number(r["noise"]) == 0
-                      and r["method"] == method), None)
+            r = row(p["part"], 0, method)
             cells.append(f"{fixed(r['f'])} ({r['patches']})" if r else "")
+        for level in noisy:
+            r = row(p["part"], level, "default")
+            cells.append(f"{fixed(r['f'])} ({r['patches']}/{r['small_patches']})" if r else "")
         body.append(cells)
-    mean = [f"mean of the {len(parts)} parts", "", "", ""]
-    for method, _ in CAD_METHODS:
-        r = next((r for r in rows if r["set"] == "mean " + set_name and number(r["noise"]) == 0
-                  and r["method"] == method), None)
-        mean.append(f"**{fixed(r['f'])}**" if r else "")
+    mean = [f"mean of the {len(parts)} parts", "", "", "", ""]
+    for level, methods in [(0, [m for m, _ in CAD_METHODS])] + [(level, ["default"]) for level in noisy]:
+        for method in methods:
+            r = next((r for r in rows if r["set"] == "mean " + set_name and number(r["noise"]) == level
+                      and r["method"] == method), None)
+            mean.append(f"**{fixed(r['f'])}**" if r else "")
     body.append(mean)
-    return markdown(["part", "faces", "true patches", "tang."] + [m[1] for m in CAD_METHODS], body,
-                    ["---", "---:", "---:", "---:"] + ["---:"] * len(CAD_METHODS)) + "\n\n" + source_line(name)
+    header = ["part", "faces", "true patches", "tang.", "band"] + [m[1] for m in CAD_METHODS]
+    header += [f"default, {100 * level:g}% noise (patches/small)" for level in noisy]
+    return markdown(header, body, ["---", "---:", "---:", "---:", "---:"] + ["---:"] * (len(header) - 5)) + \
+        "\n\n" + source_line(name)
 
 
 def quality_cad():
@@ -119,7 +131,7 @@ def quality_generated():
     def label(part):
         kind, _, resolution = part.rpartition("_")
         return kind.replace("_", " ") + "&nbsp;" + resolution
-    return quality_parts("generated", label)
+    return quality_parts("generated", label, (0.001, 0.003))
 
 
 def quality_means():

@@ -223,6 +223,7 @@ struct Cad_result
   std::string set; ///< part_set(): "cad" and "abc-dev" make the development set, "abc" follows it
   std::size_t faces = 0, true_patches = 0;
   double tangent_share = 0;
+  double band_share = 0; ///< FS::boundary_band_share() of the true patches at 1% of the diagonal
   std::vector<std::vector<Cad_score> > scores; ///< [noise level][method]
   std::filesystem::path path;                   ///< the part's file, read again for its scene
   Part_format format = Part_format::OBJ_LABELS;
@@ -241,6 +242,9 @@ inline bool evaluate_cad_part(const std::filesystem::path& path, Part_format for
   result.faces = part.mesh.number_of_faces();
   result.true_patches = number_of_distinct(part.labels);
   result.tangent_share = tangent_continuous_share(part.mesh, part.labels);
+  result.band_share = FS::boundary_band_share(
+    part.mesh, boost::make_function_property_map<face_descriptor>([&part](face_descriptor f) { return part.labels[f.idx()]; }),
+    FS::default_boundary_tolerance(part.mesh));
   std::cerr << "evaluate_quality: CAD part " << part.name << " (" << result.faces << " faces)" << std::endl;
   for(double sigma : options.noise)
   {

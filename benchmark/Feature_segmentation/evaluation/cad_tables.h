@@ -69,7 +69,7 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
   const std::size_t levels = options.noise.size();
 
   Text_table csv;
-  csv.header = {"set", "part", "faces", "true_patches", "tangent_share", "noise", "method",
+  csv.header = {"set", "part", "faces", "true_patches", "tangent_share", "band_share", "noise", "method",
                 "patches", "small_patches", "precision", "recall", "f", "seconds"};
   for(const Cad_result& r : results)
     for(std::size_t l = 0; l < levels; ++l)
@@ -78,7 +78,7 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
         if(!options.runs(k)) continue;
         const Cad_score& s = r.scores[l][k];
         csv.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches),
-                            fmt(r.tangent_share, 6), plain(options.noise[l]), methods[k].first,
+                            fmt(r.tangent_share, 6), fmt(r.band_share, 6), plain(options.noise[l]), methods[k].first,
                             std::to_string(s.patches), std::to_string(s.small_patches), fmt(s.boundary.precision, 6),
                             fmt(s.boundary.recall, 6), fmt(s.boundary.f_score, 6), fmt(s.seconds, 3)});
       }
@@ -89,7 +89,7 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
       if(m.second == 0) continue;
       for(std::size_t k = 0; k < methods.size(); ++k)
         if(options.runs(k))
-          csv.rows.push_back({"mean " + group.first, "", "", "", "", plain(options.noise[l]), methods[k].first, "", "",
+          csv.rows.push_back({"mean " + group.first, "", "", "", "", "", plain(options.noise[l]), methods[k].first, "", "",
                             "", "", fmt(m.first[k], 6), ""});
     }
   std::ofstream csv_file(std::filesystem::path(out) / "cad_parts.csv");
@@ -109,6 +109,8 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
         "faces of one shape (evaluation/ransac.h); \"VSA (true count)\": CGAL's variational shape "
         "approximation with the true patch count (L21, hierarchical seeding, seeded). \"tang.\": the share of the "
         "true boundary length whose dihedral angle is below 20 degrees (tangent-continuous), on the clean mesh. "
+        "\"band\": the share of the area within the tolerance of a true boundary (FS::boundary_band_share()), about "
+        "the precision of a boundary drawn anywhere: where it is near 1, many small patches score a high F. "
         "Noise: every vertex moved along its normal by a normal deviate of the given standard deviation (seed 1).\n";
   for(const auto& group : cad_groups())
   {
@@ -132,12 +134,13 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
   {
     md << "\n## Noise " << plain(100 * options.noise[l]) << "% of the diagonal\n\n";
     Text_table t;
-    t.header = {"set", "part", "faces", "true patches", "tang."};
+    t.header = {"set", "part", "faces", "true patches", "tang.", "band"};
     for(std::size_t k = 0; k < methods.size(); ++k)
       if(options.runs(k)) t.header.push_back(methods[k].second);
     for(const Cad_result& r : results)
     {
-      t.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share)});
+      t.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches), fmt(r.tangent_share),
+                        fmt(r.band_share)});
       for(const Cad_score& s : r.scores[l])
         if(s.ran)
           t.rows.back().push_back(fmt(s.boundary.f_score) + " (" + std::to_string(s.patches) + "/" +
@@ -147,7 +150,7 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
     {
       const auto m = mean_f(results, group.second, l);
       if(m.second == 0) continue;
-      t.rows.push_back({"", "mean " + group.first + " (" + std::to_string(m.second) + ")", "", "", ""});
+      t.rows.push_back({"", "mean " + group.first + " (" + std::to_string(m.second) + ")", "", "", "", ""});
       for(std::size_t k = 0; k < methods.size(); ++k)
         if(options.runs(k)) t.rows.back().push_back("**" + fmt(m.first[k]) + "**");
     }

@@ -227,6 +227,44 @@ Boundary_scores compare_boundaries(const TriangleMesh& tm, FacePatchMap face_pat
 }
 
 /// \ingroup PkgFeatureSegmentationEvaluation
+/// The share of the area of `tm` that lies within `tolerance` of the patch boundary of
+/// `reference_face_patch` (a face counts, with its whole area, when its centroid does):
+/// about the boundary precision that a boundary drawn anywhere on the surface gets by
+/// chance. Where it is close to 1, as on a part whose faces are all narrower than twice
+/// the tolerance, precision tells little, and a segmentation cut into many small patches
+/// (high recall) gets a high F-score; the patch count and the number of small patches
+/// tell it apart. 0 if the reference has no boundary or the mesh no area.
+///
+/// \tparam ReferenceFacePatchMap a `ReadablePropertyMap` from `face_descriptor` to an integer type
+/// \param tm the mesh (a model of `FaceListGraph`)
+/// \param reference_face_patch the patch of every face in the reference (the ground truth)
+/// \param tolerance the distance tolerance of compare_boundaries(), in the mesh's units
+/// \param np optional named parameters: `vertex_point_map`
+/// \throws Invalid_input if `tolerance` is negative or not finite
+template <typename TriangleMesh, typename ReferenceFacePatchMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double boundary_band_share(const TriangleMesh& tm, ReferenceFacePatchMap reference_face_patch, double tolerance,
+                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw Invalid_input("the boundary tolerance must be a finite number >= 0 (got " + std::to_string(tolerance) + ")");
+  const auto vpm = CGAL::Feature_segmentation::internal::vertex_point_map(tm, np);
+  const internal::Segment_distance to_boundary(internal::patch_boundary_segments(tm, reference_face_patch, vpm));
+  double within = 0., total = 0.;
+  for(auto f : faces(tm))
+  {
+    const auto h = halfedge(f, tm);
+    const internal::Evaluation_point a = internal::to_evaluation_point(get(vpm, source(h, tm))),
+                                     b = internal::to_evaluation_point(get(vpm, target(h, tm))),
+                                     c = internal::to_evaluation_point(get(vpm, target(next(h, tm), tm)));
+    const double area = std::sqrt(CGAL::squared_area(a, b, c));
+    total += area;
+    if(to_boundary.is_within(CGAL::centroid(a, b, c), tolerance)) within += area;
+  }
+  return total > 0 ? within / total : 0.;
+}
+
+/// \ingroup PkgFeatureSegmentationEvaluation
 /// Scores boundary curves on the surface (from `compute_patch_boundaries()`, typically
 /// after `smooth_patch_boundaries()`) against the patch boundaries of the reference face
 /// labelling `reference_face_patch` of the same mesh, as the face-labelling overload does,

@@ -191,6 +191,25 @@ BOOST_AUTO_TEST_CASE(over_and_under_segmentation_by_hand)
   BOOST_CHECK_EQUAL(FS::compare_partitions(ref, ref, w).over_segmentation + FS::compare_partitions(ref, ref, w).under_segmentation, 0u);
 }
 
+BOOST_AUTO_TEST_CASE(boundary_band_share_on_a_grid)
+{
+  // The square [-1, 1]^2 in cells of 0.2, each cut into two triangles of equal area whose
+  // centroids lie 1/3 and 2/3 of the way across the cell (x offsets 0.0667 and 0.1333).
+  // With the boundary on x = 0, tolerance 0.1 holds one triangle of each of the 2 x 10
+  // cells beside it (20 of the 200 faces), 0.15 both (40), 0.05 none; no boundary, none.
+  const Mesh m = square();
+  BOOST_CHECK_EQUAL(m.number_of_faces(), 200u);
+  const auto truth = face_labels(m, [](const FE::K::Point_3& c) { return c.x() < 0 ? 0 : 1; });
+  BOOST_CHECK_CLOSE(FS::boundary_band_share(m, as_map(truth), 0.1), 0.1, 1e-9);
+  BOOST_CHECK_CLOSE(FS::boundary_band_share(m, as_map(truth), 0.15), 0.2, 1e-9);
+  BOOST_CHECK_EQUAL(FS::boundary_band_share(m, as_map(truth), 0.05), 0.);
+  // Tolerance 2 covers the square: every boundary drawn on it is matched by chance.
+  BOOST_CHECK_CLOSE(FS::boundary_band_share(m, as_map(truth), 2.), 1., 1e-9);
+  const std::vector<int> one(m.number_of_faces(), 0);
+  BOOST_CHECK_EQUAL(FS::boundary_band_share(m, as_map(one), 0.15), 0.);
+  BOOST_CHECK_THROW(FS::boundary_band_share(m, as_map(truth), -1.), FS::Invalid_input);
+}
+
 BOOST_AUTO_TEST_CASE(boundary_precision_recall_on_a_grid)
 {
   const Mesh m = square();
