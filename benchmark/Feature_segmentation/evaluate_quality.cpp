@@ -44,14 +44,16 @@
 //
 // Usage: evaluate_quality [--data DIR] [--out DIR] [--only NAME[,NAME...]] [--parts NAME[,NAME...]]
 //                         [--no-robustness] [--methods NAME[,NAME...]]
-//                         [--noise X,Y,...] [--alpha A] [--strength-threshold S]
+//                         [--noise X,Y,...] [--noise-seeds N] [--alpha A] [--strength-threshold S]
 //                         [--crease-filter N] [--no-tangent] [--crest-lines | --no-crest-lines]
 //   DIR (default $FEATURE_SEGMENTATION_DATA): holds paper-models/, abc/ (ground truth)
 //   and cad/; without it, fandisk alone is evaluated and the CAD table is skipped.
 //   --only names models of the quality table, "cad" (the CAD table) and "resolution"
 //   (the resolution series): `--only cad` is the CAD table alone. The options from
 //   --noise on set the CAD table and the resolution series; --methods keeps some of the
-//   CAD table's columns (`--methods default` for a quick look at the package alone).
+//   CAD table's columns (`--methods default` for a quick look at the package alone);
+//   --noise-seeds N scores every noisy level on N noise realisations and gives their
+//   means (one realisation moves a part's F by up to 0.1 between nearly equal settings).
 //   --help tells more.
 
 #include "evaluation/abc_ground_truth.h"

@@ -81,6 +81,8 @@ inline std::optional<int> read_command_line(int argc, char** argv, Evaluation_op
      ("CAD table: only these columns (" + method_names() + "); default: all").c_str())
     ("noise", po::value(&noise)->value_name("X,Y,...")->default_value(noise),
      "CAD table: the noise levels, standard deviations as fractions of the diagonal")
+    ("noise-seeds", po::value(&cad.noise_seeds)->value_name("N")->default_value(cad.noise_seeds),
+     "CAD table: score each noisy level on N noise realisations (seeds 1 to N) and give their means")
     ("alpha", po::value(&cad.alpha)->value_name("A")->default_value(cad.alpha, plain(cad.alpha)),
      "CAD table and resolution series: alpha of this package (the paper's pipeline keeps 0.6)")
     ("strength-threshold",
@@ -125,6 +127,7 @@ inline std::optional<int> read_command_line(int argc, char** argv, Evaluation_op
       cad.noise.push_back(sigma);
     }
     if(cad.noise.empty()) throw po::error("--noise takes at least one level");
+    if(cad.noise_seeds < 1 || cad.noise_seeds > 100) throw po::error("--noise-seeds takes an integer in 1 .. 100");
     if(crest_lines && no_crest_lines) throw po::error("--crest-lines and --no-crest-lines exclude each other");
     for(const std::string& name : split_commas(only)) opt.only.insert(name);
     for(const std::string& name : split_commas(parts)) opt.parts.insert(name);

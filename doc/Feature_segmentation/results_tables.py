@@ -26,7 +26,7 @@ import sys
 import results_common
 from results_common import *  # noqa: F401,F403 (the readers and formatters)
 from results_quality import (quality_abc_dev, quality_cad, quality_coverage, quality_generated, quality_means,
-                             quality_nut, quality_resolution)
+                             quality_means_seeds, quality_nut, quality_resolution)
 
 
 def perf_stages():
@@ -249,6 +249,7 @@ TABLES = {
     "quality_abc_dev": quality_abc_dev,
     "quality_generated": quality_generated,
     "quality_means": quality_means,
+    "quality_means_seeds": quality_means_seeds,
 }
 
 

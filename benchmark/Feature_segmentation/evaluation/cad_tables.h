@@ -111,7 +111,11 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
         "true boundary length whose dihedral angle is below 20 degrees (tangent-continuous), on the clean mesh. "
         "\"band\": the share of the area within the tolerance of a true boundary (FS::boundary_band_share()), about "
         "the precision of a boundary drawn anywhere: where it is near 1, many small patches score a high F. "
-        "Noise: every vertex moved along its normal by a normal deviate of the given standard deviation (seed 1).\n";
+        "Noise: every vertex moved along its normal by a normal deviate of the given standard deviation ("
+     << (options.noise_seeds == 1 ? std::string("seed 1") :
+                                    "the means over seeds 1 to " + std::to_string(options.noise_seeds) +
+                                      ", patch counts rounded")
+     << ").\n";
   for(const auto& group : cad_groups())
   {
     if(mean_f(results, group.second, 0).second == 0) continue;

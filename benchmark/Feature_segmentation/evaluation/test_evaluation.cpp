@@ -210,6 +210,34 @@ BOOST_AUTO_TEST_CASE(boundary_band_share_on_a_grid)
   BOOST_CHECK_THROW(FS::boundary_band_share(m, as_map(truth), -1.), FS::Invalid_input);
 }
 
+BOOST_AUTO_TEST_CASE(mean_scores_of_noise_realisations)
+{
+  // Two realisations of two methods, the second not run: F 0.5 and 1 average to 0.75,
+  // 3 and 4 patches to 3.5, rounded away from zero to 4; one realisation is itself.
+  auto score = [](double f, std::size_t patches, std::size_t small) {
+    fs_evaluation::Cad_score s;
+    s.boundary.precision = s.boundary.recall = s.boundary.f_score = f;
+    s.patches = patches;
+    s.small_patches = small;
+    s.seconds = f;
+    return s;
+  };
+  fs_evaluation::Cad_score off;
+  off.ran = false;
+  const std::vector<std::vector<fs_evaluation::Cad_score> > runs = {{score(0.5, 3, 0), off}, {score(1., 4, 2), off}};
+  const std::vector<fs_evaluation::Cad_score> mean = fs_evaluation::mean_scores(runs);
+  BOOST_REQUIRE_EQUAL(mean.size(), 2u);
+  BOOST_CHECK_CLOSE(mean[0].boundary.f_score, 0.75, 1e-12);
+  BOOST_CHECK_CLOSE(mean[0].boundary.precision, 0.75, 1e-12);
+  BOOST_CHECK_CLOSE(mean[0].seconds, 0.75, 1e-12);
+  BOOST_CHECK_EQUAL(mean[0].patches, 4u);
+  BOOST_CHECK_EQUAL(mean[0].small_patches, 1u);
+  BOOST_CHECK(!mean[1].ran);
+  const std::vector<fs_evaluation::Cad_score> one = fs_evaluation::mean_scores({runs.front()});
+  BOOST_CHECK_EQUAL(one[0].boundary.f_score, 0.5);
+  BOOST_CHECK_EQUAL(one[0].patches, 3u);
+}
+
 BOOST_AUTO_TEST_CASE(boundary_precision_recall_on_a_grid)
 {
   const Mesh m = square();
