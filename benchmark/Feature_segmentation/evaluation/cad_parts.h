@@ -290,7 +290,7 @@ inline bool evaluate_cad_part(const std::filesystem::path& path, Part_format for
       result.scores.push_back(run_cad_methods(part.mesh, part.labels, result.true_patches, options));
       continue;
     }
-    // seeds 1 to noise_seeds at every level (the manual's CAD numbers: seed 1 alone)
+    // seeds 1 to noise_seeds at every level (results/cad_parts.csv: seed 1 alone)
     std::vector<std::vector<Cad_score> > runs;
     for(int seed = 1; seed <= options.noise_seeds; ++seed)
       runs.push_back(
