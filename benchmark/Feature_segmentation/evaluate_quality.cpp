@@ -53,7 +53,8 @@
 //   --noise on set the CAD table and the resolution series; --methods keeps some of the
 //   CAD table's columns (`--methods default` for a quick look at the package alone);
 //   --noise-seeds N scores every noisy level on N noise realisations and gives their
-//   means (one realisation moves a part's F by up to 0.1 between nearly equal settings).
+//   means (on one realisation a part's F moves by 0.1 or more between nearly equal
+//   settings).
 //   --help tells more.
 
 #include "evaluation/abc_ground_truth.h"

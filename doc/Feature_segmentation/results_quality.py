@@ -91,8 +91,8 @@ def quality_parts(set_name, label, noisy=()):
     if not parts:
         raise TableError(f"{name}: no clean rows of the set {set_name}")
 
-    def row(part, level, method):
-        return next((r for r in rows if r["set"] == set_name and r["part"] == part and number(r["noise"]) == level
+    def row(part, level, method, set_=set_name):
+        return next((r for r in rows if r["set"] == set_ and r["part"] == part and number(r["noise"]) == level
                      and r["method"] == method), None)
 
     body = []
@@ -109,8 +109,7 @@ def quality_parts(set_name, label, noisy=()):
     mean = [f"mean of the {len(parts)} parts", "", "", "", ""]
     for level, methods in [(0, [m for m, _ in CAD_METHODS])] + [(level, ["default"]) for level in noisy]:
         for method in methods:
-            r = next((r for r in rows if r["set"] == "mean " + set_name and number(r["noise"]) == level
-                      and r["method"] == method), None)
+            r = row("", level, method, "mean " + set_name)
             mean.append(f"**{fixed(r['f'])}**" if r else "")
     body.append(mean)
     header = ["part", "faces", "true patches", "tang.", "band"] + [m[1] for m in CAD_METHODS]

@@ -219,11 +219,11 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
   return scores;
 }
 
-/// The means of the scores of several runs of the same methods (noise realisations):
-/// boundary scores and seconds averaged, patch counts averaged and rounded.
+/// The means of the scores of one or more runs of the same methods (noise realisations):
+/// boundary scores and seconds averaged, patch counts averaged and rounded (one run: its
+/// own scores).
 inline std::vector<Cad_score> mean_scores(const std::vector<std::vector<Cad_score> >& runs)
 {
-  if(runs.size() == 1) return runs.front();
   std::vector<Cad_score> mean = runs.front();
   const double n = double(runs.size());
   for(std::size_t k = 0; k < mean.size(); ++k)
