@@ -132,6 +132,62 @@ BOOST_AUTO_TEST_CASE(crease_lines_are_the_candidates_sharing_vertices)
   BOOST_TEST(edges[2] == 3u);
 }
 
+BOOST_AUTO_TEST_CASE(short_candidate_lines_are_kept_where_they_go_on_from_long_creases)
+{
+  // the grid above, lines of at least 5 edges. Kept: 3 candidates along y = 0.8 from
+  // x = 0 to 0.6, going on from the end of the crease of 5 edges along y = 0.8 for
+  // x <= 0; 4 candidates along y = -0.2 from x = -0.4 to 0.4, filling the gap between
+  // its creases of 2 edges (x from -0.8 to -0.4) and 3 edges (x >= 0.4); 10 candidates
+  // along y = -1 alone. Not kept: a stub of 2 candidates along x = 0 from y = 0.4 down
+  // to 0, off the middle of the crease along y = 0.4 (10 edges); 3 candidates along
+  // y = 0 from x = -1 to -0.4, turning off at the end of the crease along x = -1 that
+  // comes down from that one (y from 0.4 to 0); 3 candidates along y = -0.8 from x = -0.6
+  // to 0, going on from the end of a crease of only 2 edges (x <= -0.6).
+  const SM m = fs_test::to_mesh<SM>(fs_test::plane(1., 10));
+  const I::Mesh_indexing<SM> idx(m);
+  const std::size_t ne = idx.number_of_edges();
+  std::vector<char> candidate(ne, 0), is_crease(ne, 0);
+  std::vector<int> kind(ne, 0); // 1 kept, 2 not kept
+  std::vector<double> value(ne, 50.), angle(ne, 10.);
+  auto near = [](double a, double b) { return std::abs(a - b) < 1e-9; };
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), m);
+    const auto& p = m.point(source(h, m));
+    const auto& q = m.point(target(h, m));
+    const bool horizontal = near(p.y(), q.y()), vertical = near(p.x(), q.x());
+    const double x0 = (std::min)(p.x(), q.x()), x1 = (std::max)(p.x(), q.x());
+    const double y0 = (std::min)(p.y(), q.y()), y1 = (std::max)(p.y(), q.y());
+    if(horizontal && near(p.y(), 0.8) && x1 < 0.01) is_crease[e] = 1;
+    if(horizontal && near(p.y(), 0.8) && x0 > -0.01 && x1 < 0.61) kind[e] = 1;
+    if(horizontal && near(p.y(), -0.2) && ((x0 > -0.81 && x1 < -0.39) || x0 > 0.39)) is_crease[e] = 1;
+    if(horizontal && near(p.y(), -0.2) && x0 > -0.41 && x1 < 0.41) kind[e] = 1;
+    if(horizontal && near(p.y(), -1.)) kind[e] = 1;
+    if(horizontal && near(p.y(), 0.4)) is_crease[e] = 1;
+    if(vertical && near(p.x(), 0.) && y0 > -0.01 && y1 < 0.41) kind[e] = 2;
+    if(vertical && near(p.x(), -1.) && y0 > -0.01 && y1 < 0.41) is_crease[e] = 1;
+    if(horizontal && near(p.y(), 0.) && x1 < -0.39) kind[e] = 2;
+    if(horizontal && near(p.y(), -0.8) && x1 < -0.59) is_crease[e] = 1;
+    if(horizontal && near(p.y(), -0.8) && x0 > -0.61 && x1 < 0.01) kind[e] = 2;
+    candidate[e] = kind[e] != 0 ? 1 : 0;
+  }
+  const std::vector<char> creases = is_crease;
+  const std::size_t added = I::add_crease_lines_and_extensions(idx, get(CGAL::vertex_point, m), candidate, value, 5, is_crease, angle);
+  std::array<std::size_t, 3> edges = { 0, 0, 0 };
+  std::size_t crease_edges = 0;
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    ++edges[std::size_t(kind[e])];
+    crease_edges += creases[e] ? 1 : 0;
+    BOOST_TEST(int(is_crease[e]) == ((creases[e] || kind[e] == 1) ? 1 : 0));
+    BOOST_TEST(angle[e] == (kind[e] == 1 ? 50. : 10.));
+  }
+  BOOST_TEST(crease_edges == 5u + 5u + 10u + 2u + 2u);
+  BOOST_TEST(edges[1] == 3u + 4u + 10u);
+  BOOST_TEST(edges[2] == 2u + 3u + 3u);
+  BOOST_TEST(added == 17u);
+}
+
 BOOST_AUTO_TEST_CASE(narrow_filter_keeps_a_moderate_crease_under_light_noise)
 {
   // The cylinder and cone of fs_test::cylinder_and_cone(), whose crease of 26.6 degrees

@@ -88,6 +88,82 @@ std::size_t add_crease_lines(const Mesh_indexing<TriangleMesh>& idx, const std::
   return added;
 }
 
+// Marks in `is_crease` (1) the edges of `candidate` (nonzero) that lie on a line of at
+// least `least_edges` of them (crease_line_sizes()), or on a shorter line that goes on
+// from the end of a crease of `is_crease` (nonzero), or fills a gap between two: at a
+// vertex where a crease ends (one crease edge) it has an edge that turns from the
+// crease's by less than 60 degrees, and the creases it meets hold at least
+// `least_edges` edges besides its own (counted on the lines of the candidates and the
+// creases together). A stub off the middle of a crease, one that turns off at its end,
+// or one that cuts across a corner between two creases of a noisy box is noise. `vpm`:
+// the points of the mesh of `idx`. Raises their `angle` to their `value` if larger;
+// returns their number.
+template <typename TriangleMesh, typename VPM>
+std::size_t add_crease_lines_and_extensions(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
+                                            const std::vector<char>& candidate, const std::vector<double>& value,
+                                            std::size_t least_edges, std::vector<char>& is_crease,
+                                            std::vector<double>& angle)
+{
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t ne = candidate.size(), nv = idx.number_of_vertices();
+  auto ends = [&](std::size_t e) {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    return std::make_pair(std::size_t(idx.id(source(h, tm))), std::size_t(idx.id(target(h, tm))));
+  };
+  // the candidates' lines (by their smallest vertex) and the creases at each vertex
+  Smallest_root_union_find lines(nv);
+  std::vector<std::uint32_t> creases_at(nv, 0);
+  std::vector<std::size_t> along_crease(nv, 0); // the other vertex of a crease edge
+  std::vector<char> with_creases(ne, 0);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto v = ends(e);
+    if(candidate[e]) lines.unite(v.first, v.second);
+    if(is_crease[e])
+    {
+      ++creases_at[v.first];
+      ++creases_at[v.second];
+      along_crease[v.first] = v.second;
+      along_crease[v.second] = v.first;
+    }
+    with_creases[e] = (candidate[e] || is_crease[e]) ? 1 : 0;
+  }
+  const std::vector<std::size_t> root = lines.roots();
+  // per line: whether it goes on from the end of a crease
+  std::vector<char> goes_on_from_an_end(nv, 0);
+  auto point = [&](std::size_t v) {
+    const auto& p = get(vpm, idx.vertex_at(v));
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
+  // a candidate edge from v to w going on from the end of a crease at v
+  auto goes_on = [&](std::size_t v, std::size_t w) {
+    if(creases_at[v] != 1) return false;
+    const Eigen::Vector3d in = point(v) - point(along_crease[v]), out = point(w) - point(v);
+    const double n = in.norm() * out.norm();
+    return n > 0 && in.dot(out) > 0.5 * n;
+  };
+  for(std::size_t e = 0; e < ne; ++e)
+    if(candidate[e])
+    {
+      const auto v = ends(e);
+      if(goes_on(v.first, v.second) || goes_on(v.second, v.first)) goes_on_from_an_end[root[v.first]] = 1;
+    }
+  const std::vector<std::size_t> alone = crease_line_sizes(idx, candidate), joint = crease_line_sizes(idx, with_creases);
+  std::size_t added = 0;
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    if(!candidate[e]) continue;
+    const std::size_t r = root[ends(e).first];
+    if(alone[e] >= least_edges || (goes_on_from_an_end[r] && joint[e] - alone[e] >= least_edges))
+    {
+      is_crease[e] = 1;
+      angle[e] = (std::max)(angle[e], value[e]);
+      ++added;
+    }
+  }
+  return added;
+}
+
 // Adds to `is_crease` (marked 1, with their angle on the narrow filter in `angle` if
 // larger) the edges of the mesh of `idx` that bend by `crease_angle` or more on the face
 // normals `normal` (of raw roughness `raw_roughness`) after `rounds` rounds of the
