@@ -128,9 +128,6 @@ std::size_t add_crease_lines_and_extensions(const Mesh_indexing<TriangleMesh>& i
     }
     with_creases[e] = (candidate[e] || is_crease[e]) ? 1 : 0;
   }
-  const std::vector<std::size_t> root = lines.roots();
-  // per line: whether it goes on from the end of a crease
-  std::vector<char> goes_on_from_an_end(nv, 0);
   auto point = [&](std::size_t v) {
     const auto& p = get(vpm, idx.vertex_at(v));
     return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
@@ -142,19 +139,24 @@ std::size_t add_crease_lines_and_extensions(const Mesh_indexing<TriangleMesh>& i
     const double n = in.norm() * out.norm();
     return n > 0 && in.dot(out) > 0.5 * n;
   };
+  // per line (at its root): its edges, and whether it goes on from the end of a crease
+  const std::vector<std::size_t> root = lines.roots();
+  std::vector<std::size_t> line_edges(nv, 0);
+  std::vector<char> goes_on_from_an_end(nv, 0);
   for(std::size_t e = 0; e < ne; ++e)
     if(candidate[e])
     {
       const auto v = ends(e);
+      ++line_edges[root[v.first]];
       if(goes_on(v.first, v.second) || goes_on(v.second, v.first)) goes_on_from_an_end[root[v.first]] = 1;
     }
-  const std::vector<std::size_t> alone = crease_line_sizes(idx, candidate), joint = crease_line_sizes(idx, with_creases);
+  const std::vector<std::size_t> joint = crease_line_sizes(idx, with_creases);
   std::size_t added = 0;
   for(std::size_t e = 0; e < ne; ++e)
   {
     if(!candidate[e]) continue;
     const std::size_t r = root[ends(e).first];
-    if(alone[e] >= least_edges || (goes_on_from_an_end[r] && joint[e] - alone[e] >= least_edges))
+    if(line_edges[r] >= least_edges || (goes_on_from_an_end[r] && joint[e] - line_edges[r] >= least_edges))
     {
       is_crease[e] = 1;
       angle[e] = (std::max)(angle[e], value[e]);
