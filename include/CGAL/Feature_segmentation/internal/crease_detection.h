@@ -19,6 +19,7 @@
 #include <CGAL/Feature_segmentation/internal/normal_filters.h>
 #include <CGAL/Feature_segmentation/internal/parallel_for.h>
 #include <CGAL/Feature_segmentation/internal/plane_borders.h>
+#include <CGAL/Feature_segmentation/internal/revolution_seams.h>
 #include <CGAL/Feature_segmentation/internal/tangent_discontinuities.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -234,11 +235,13 @@ constexpr double crease_rough_plane_share = 0.2;
 // (mark_tangent_discontinuities), marked 2; on a noisy one (raw roughness above
 // Crease_gap::raw_roughness) and if `tangent`, the borders of its planes on the filtered
 // normals (mark_plane_borders), marked 2, and so on any other rough one whose planes
-// hold crease_rough_plane_share of its area or more; a piece of one or two faces (if
-// not clean, of up to crease_noisy_piece_max_faces) that these would cut out keeps its
-// flattest edge (join_isolated_crease_faces). `angle` receives the filtered angles (of a
-// crease of a heavily noisy mesh, the larger of the two filters'), `clean` whether the
-// tessellation is clean, `cad` whether its crest lines weigh less, as those of a CAD
+// hold crease_rough_plane_share of its area or more; on a noisy one and if `tangent`
+// also the seams between the pieces of its surfaces of revolution
+// (mark_revolution_seams), marked 2; a piece of one or two faces (if not clean, of up
+// to crease_noisy_piece_max_faces) that these would cut out keeps its flattest edge
+// (join_isolated_crease_faces). `angle` receives the filtered angles (of a crease of a
+// heavily noisy mesh, the larger of the two filters'), `clean` whether the tessellation
+// is clean, `cad` whether its crest lines weigh less, as those of a CAD
 // part: is_cad_tessellation if clean; on a noisy mesh (raw roughness above
 // Crease_gap::raw_roughness) always, since noise makes crest lines along every cylinder
 // and round every torus, which at the full alpha cut a noisy part's faces (a torus of
@@ -338,6 +341,8 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   if(planes)
     mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, smooth ? crease_rough_plane_share : 0.);
+  // a noisy mesh's surfaces of revolution get the seams between their pieces
+  if(tangent && !smooth && filtered) mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease);
   if(clean) join_isolated_crease_faces(idx, angle, is_crease);
   else join_isolated_crease_faces(idx, angle, is_crease, crease_noisy_piece_max_faces, 180.);
   // a noisy mesh's crest lines weigh less whatever its creases (see above)

@@ -1,0 +1,251 @@
+// The seams of noisy surfaces of revolution (revolution_seams.h): the axis fit is exact
+// on exact normals of a tilted torus and refuses a plane; the pieces of a profile are the
+// brute-force optimum; on a noisy cylinder running tangentially into a sphere the seam
+// circle is found within a few rows and parts the two; a noisy cylinder alone, a noisy
+// elliptic cylinder (no surface of revolution) and a noisy plane get none.
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Feature_segmentation/internal/crease_detection.h>
+#include <CGAL/Feature_segmentation/internal/revolution_seams.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "crease_test_geometry.h"
+#include "test_meshes.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <vector>
+
+namespace FS = CGAL::Feature_segmentation;
+
+BOOST_AUTO_TEST_SUITE(revolution_seams)
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Surface_mesh<Epick::Point_3> SM;
+namespace I = FS::internal;
+
+BOOST_AUTO_TEST_CASE(axis_of_a_tilted_torus_and_none_for_a_plane)
+{
+  // Points and exact normals of a torus (radii 3 and 1) about the axis through (1, -2, 0.5)
+  // along (1, 2, 2) / 3, over a quarter of its parallels and half of its meridians.
+  const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 2).normalized(), origin(1, -2, 0.5);
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  std::vector<Eigen::Vector3d> c, n;
+  for(int i = 0; i < 20; ++i)
+    for(int j = 0; j < 20; ++j)
+    {
+      const double theta = 0.5 * M_PI * i / 19, phi = M_PI * j / 19;
+      const Eigen::Vector3d radial = std::cos(theta) * e1 + std::sin(theta) * e2;
+      const Eigen::Vector3d normal = std::cos(phi) * radial + std::sin(phi) * axis;
+      c.push_back(origin + 3. * radial + normal);
+      n.push_back(normal);
+    }
+  const std::vector<double> w(c.size(), 1.);
+  Eigen::Vector3d a, p;
+  BOOST_TEST(I::fit_revolution_axis(c, n, w, a, p));
+  BOOST_TEST(std::abs(a.dot(axis)) == 1., boost::test_tools::tolerance(1e-9));
+  BOOST_TEST((p - origin).cross(axis).norm() < 1e-9); // p on the axis
+
+  // a plane's normals are one direction: every line along it is an axis
+  std::vector<Eigen::Vector3d> pc, pn;
+  for(int i = 0; i < 10; ++i)
+    for(int j = 0; j < 10; ++j)
+    {
+      pc.emplace_back(i, j, 0.);
+      pn.emplace_back(0., 0., 1.);
+    }
+  BOOST_TEST(!I::fit_revolution_axis(pc, pn, std::vector<double>(pc.size(), 1.), a, p));
+}
+
+BOOST_AUTO_TEST_CASE(profile_pieces_are_the_brute_force_optimum)
+{
+  // 12 bins of 3 points each along a profile that runs straight (z from 0 to 1.2 at r = 1)
+  // and then round a circle of radius 0.5, with deterministic offsets of up to 0.02; the
+  // pieces of at least 2 bins minimising the fit error over 1e-4 plus 3 per piece, found
+  // by the dynamic programme and by trying all 2^11 sets of cuts.
+  const std::size_t bins = 12, least = 2;
+  const double unit = 1e-4, penalty = 3.;
+  std::vector<I::Profile_moments> per_bin(bins);
+  unsigned state = 7;
+  for(std::size_t b = 0; b < bins; ++b)
+    for(int k = 0; k < 3; ++k)
+    {
+      state = state * 1103515245u + 12345u;
+      const double jitter = 0.02 * ((state >> 8) % 1000 / 500. - 1.);
+      const double t = 0.2 * (double(b) + k / 3.);
+      double z, r;
+      if(t <= 1.2) { z = t; r = 1.; }
+      else
+      {
+        const double angle = (t - 1.2) / 0.5;
+        z = 1.2 + 0.5 * std::sin(angle);
+        r = 0.5 + 0.5 * std::cos(angle);
+      }
+      per_bin[b].add(1., z, r + jitter);
+    }
+  std::vector<I::Profile_moments> prefix(bins + 1);
+  for(std::size_t b = 0; b < bins; ++b)
+    for(int k = 0; k < 10; ++k) prefix[b + 1].s[k] = prefix[b].s[k] + per_bin[b].s[k];
+  auto cost = [&](const std::vector<std::size_t>& first) {
+    double total = 0.;
+    for(std::size_t i = 0; i < first.size(); ++i)
+    {
+      const std::size_t end = i + 1 < first.size() ? first[i + 1] : bins;
+      if(end - first[i] < least) return std::numeric_limits<double>::infinity();
+      total += (prefix[end] - prefix[first[i]]).fit_error() / unit + penalty;
+    }
+    return total;
+  };
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> best_first;
+  for(unsigned mask = 0; mask < (1u << (bins - 1)); ++mask)
+  {
+    std::vector<std::size_t> first{ 0 };
+    for(std::size_t b = 1; b < bins; ++b)
+      if(mask & (1u << (b - 1))) first.push_back(b);
+    const double c = cost(first);
+    if(c < best)
+    {
+      best = c;
+      best_first = first;
+    }
+  }
+  const std::vector<std::size_t> first = I::profile_pieces(prefix, least, unit, penalty);
+  BOOST_TEST(cost(first) == best, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(first == best_first, boost::test_tools::per_element());
+  // more than one piece: the straight part and the arc
+  BOOST_TEST(first.size() >= 2u);
+  // one straight piece: its fit error is its points' jitter only
+  BOOST_TEST((prefix[6] - prefix[0]).fit_error() <= 18 * 0.02 * 0.02);
+}
+
+// A surface of revolution about the z axis, `around` facets round, whose vertex rows run
+// along the profile point(j) (z, r) for j = 0 .. rows, every vertex moved along the
+// profile's normal by add_noise_along() of `amplitude`.
+template <typename Profile>
+fs_test::Soup noisy_revolution(int around, int rows, Profile point, double amplitude)
+{
+  fs_test::Soup s = fs_test::parametric_grid(around, rows, true, false, [&](double u, double v) {
+    const double a = 2 * M_PI * u;
+    const std::array<double, 2> zr = point(v * rows);
+    return std::array<double, 3>{ zr[1] * std::cos(a), zr[1] * std::sin(a), zr[0] };
+  });
+  std::vector<std::array<double, 3> > normal;
+  for(int j = 0; j <= rows; ++j)
+    for(int i = 0; i < around; ++i)
+    {
+      const double a = 2 * M_PI * i / around;
+      const std::array<double, 2> p = point(j - 0.01), q = point(j + 0.01);
+      // the profile's normal: its tangent (dz, dr) turned to point away from the axis
+      double nz = -(q[1] - p[1]), nr = q[0] - p[0];
+      const double len = std::hypot(nz, nr);
+      nz /= len;
+      nr /= len;
+      normal.push_back({ nr * std::cos(a), nr * std::sin(a), nz });
+    }
+  fs_test::add_noise_along(s, normal, amplitude);
+  return s;
+}
+
+// The marks of mark_revolution_seams() on a mesh with no crease.
+std::vector<char> revolution_seams_of(const SM& m, const I::Mesh_indexing<SM>& idx, std::size_t& marked)
+{
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  marked = I::mark_revolution_seams(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid, g.begin, g.ring,
+                                    is_crease);
+  return is_crease;
+}
+
+BOOST_AUTO_TEST_CASE(cylinder_into_sphere_under_noise)
+{
+  // A cylinder of radius 1 from z = 0 to 3 (30 rows of 0.1) running tangentially into the
+  // sphere of radius 1 about (0, 0, 3) up to 75 degrees of latitude (13 rows of 0.1007),
+  // 64 facets round (0.098); no dihedral angle marks the seam circle z = 3, and the
+  // curvature along the profile jumps from 0 to 1 there. Noise uniform in +-0.03 along
+  // the normals (a standard deviation of 0.017, 0.36% of the diagonal 4.87).
+  const double top = 75. * M_PI / 180.;
+  auto profile = [&](double j) {
+    if(j <= 30) return std::array<double, 2>{ 0.1 * j, 1. };
+    const double theta = (j - 30) / 13. * top;
+    return std::array<double, 2>{ 3. + std::sin(theta), std::cos(theta) };
+  };
+  const SM m = fs_test::to_mesh<SM>(noisy_revolution(64, 43, profile, 0.03));
+  const I::Mesh_indexing<SM> idx(m);
+  std::size_t marked = 0;
+  const std::vector<char> is_crease = revolution_seams_of(m, idx, marked);
+  double farthest = 0.;
+  std::size_t count = 0;
+  for(std::size_t e = 0; e < is_crease.size(); ++e)
+    if(is_crease[e])
+    {
+      BOOST_TEST(is_crease[e] == 2); // a curvature discontinuity
+      ++count;
+      const auto h = halfedge(idx.edge_at(e), m);
+      farthest = (std::max)({ farthest, std::abs(m.point(source(h, m)).z() - 3.), std::abs(m.point(target(h, m)).z() - 3.) });
+    }
+  BOOST_TEST_MESSAGE("marked " << marked << ", at most " << farthest << " from the seam circle");
+  BOOST_TEST(marked == count);
+  // a closed circle round the axis takes at least one edge per facet
+  BOOST_TEST(marked >= 64u);
+  // on the rows next to the circle (0.1, plus the noise's 0.03): the tangent seam is
+  // placed within the half-edge bins of the profile (0.05), and a row's edges reach 0.1
+  BOOST_TEST(farthest <= 0.13);
+  // the seam parts the cylinder from the sphere: two regions
+  const std::vector<std::size_t> root = I::face_components(idx, [&](std::size_t e) { return !is_crease[e]; });
+  const std::set<std::size_t> regions(root.begin(), root.end());
+  BOOST_TEST(regions.size() == 2u);
+
+  // and the crease detection at the defaults marks it too
+  const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
+  BOOST_TEST(!detected.clean);
+  std::size_t seams = 0;
+  for(std::size_t e = 0; e < detected.is_crease.size(); ++e) seams += detected.is_crease[e] == 2 && is_crease[e];
+  BOOST_TEST(seams >= 64u);
+}
+
+BOOST_AUTO_TEST_CASE(one_piece_or_no_surface_of_revolution_gets_none)
+{
+  std::size_t marked = 0;
+  // a noisy cylinder of radius 1 and height 6 (32 facets round, 30 rows): one straight piece
+  {
+    const SM m = fs_test::to_mesh<SM>(fs_test::noisy_cylinder(1., 6., 32, 30, 0.05));
+    const I::Mesh_indexing<SM> idx(m);
+    revolution_seams_of(m, idx, marked);
+    BOOST_TEST(marked == 0u);
+  }
+  // a noisy elliptic cylinder (semi-axes 2 and 1, height 6): its normals meet no line, and
+  // about the best one its profile is no thin curve
+  {
+    fs_test::Soup s = fs_test::parametric_grid(64, 30, true, false, [](double u, double v) {
+      const double a = 2 * M_PI * u;
+      return std::array<double, 3>{ 2 * std::cos(a), std::sin(a), 6 * v };
+    });
+    std::vector<std::array<double, 3> > normal;
+    for(const auto& p : s.points)
+    {
+      const double nx = p[0] / 4, ny = p[1], len = std::hypot(nx, ny);
+      normal.push_back({ nx / len, ny / len, 0. });
+    }
+    fs_test::add_noise_along(s, normal, 0.05);
+    const SM m = fs_test::to_mesh<SM>(s);
+    const I::Mesh_indexing<SM> idx(m);
+    revolution_seams_of(m, idx, marked);
+    BOOST_TEST(marked == 0u);
+  }
+  // a noisy plane: no axis, or about one near its normal a single straight piece
+  {
+    fs_test::Soup s = fs_test::plane(2., 40);
+    fs_test::add_noise_along(s, std::vector<std::array<double, 3> >(s.points.size(), { 0., 0., 1. }), 0.03);
+    const SM m = fs_test::to_mesh<SM>(s);
+    const I::Mesh_indexing<SM> idx(m);
+    revolution_seams_of(m, idx, marked);
+    BOOST_TEST(marked == 0u);
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
