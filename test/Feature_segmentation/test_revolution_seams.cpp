@@ -1,5 +1,5 @@
 // The seams of noisy surfaces of revolution (revolution_seams.h): the axis fit is exact
-// on exact normals of a tilted torus and refuses a plane; the pieces of a profile are the
+// on exact normals of a tilted torus and cylinder and refuses a plane; the pieces of a profile are the
 // brute-force optimum; on a noisy cylinder running tangentially into a sphere the seam
 // circle is found within a few rows and parts the two; a noisy cylinder alone, a noisy
 // elliptic cylinder (no surface of revolution) and a noisy plane get none.
@@ -28,7 +28,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Surface_mesh<Epick::Point_3> SM;
 namespace I = FS::internal;
 
-BOOST_AUTO_TEST_CASE(axis_of_a_tilted_torus_and_none_for_a_plane)
+BOOST_AUTO_TEST_CASE(axis_of_a_tilted_torus_and_cylinder_and_none_for_a_plane)
 {
   // Points and exact normals of a torus (radii 3 and 1) about the axis through (1, -2, 0.5)
   // along (1, 2, 2) / 3, over a quarter of its parallels and half of its meridians.
@@ -48,7 +48,22 @@ BOOST_AUTO_TEST_CASE(axis_of_a_tilted_torus_and_none_for_a_plane)
   Eigen::Vector3d a, p;
   BOOST_TEST(I::fit_revolution_axis(c, n, w, a, p));
   BOOST_TEST(std::abs(a.dot(axis)) == 1., boost::test_tools::tolerance(1e-9));
-  BOOST_TEST((p - origin).cross(axis).norm() < 1e-9); // p on the axis
+  BOOST_TEST((p - origin).cross(axis).norm() < 1e-7); // p on the axis
+
+  // a cylinder (radius 2, the same axis and origin) with exact normals: its normal lines
+  // also meet helices about the axis, and the axis is the one taken
+  std::vector<Eigen::Vector3d> cc, cn;
+  for(int i = 0; i < 20; ++i)
+    for(int j = 0; j < 10; ++j)
+    {
+      const double theta = 1.5 * M_PI * i / 19;
+      const Eigen::Vector3d radial = std::cos(theta) * e1 + std::sin(theta) * e2;
+      cc.push_back(origin + 2. * radial + 0.3 * j * axis);
+      cn.push_back(radial);
+    }
+  BOOST_TEST(I::fit_revolution_axis(cc, cn, std::vector<double>(cc.size(), 1.), a, p));
+  BOOST_TEST(std::abs(a.dot(axis)) == 1., boost::test_tools::tolerance(1e-9));
+  BOOST_TEST((p - origin).cross(axis).norm() < 1e-6);
 
   // a plane's normals are one direction: every line along it is an axis
   std::vector<Eigen::Vector3d> pc, pn;

@@ -60,7 +60,7 @@ struct Revolution_seams
   // be more than `most_bins`: the pieces take time quadratic in the bins); a piece holds
   // at least `least_bins` of them (with 2, the development mean at 0.3% noise falls by
   // 0.01 over three noise realisations: ABC 00006566 from 1.00 to 0.67)
-  static constexpr std::size_t least_bins = 4, most_bins = 4096;
+  static constexpr std::size_t least_bins = 4, most_bins = 2048;
   // the cost of a piece, in units of a face's squared noise, times the log of the
   // region's face count (a Bayesian information criterion with a wide margin): 60, 150
   // and 300 give the development and generated means within 0.0025 of 100's over three
@@ -94,12 +94,17 @@ inline bool fit_revolution_axis(const std::vector<Eigen::Vector3d>& c, const std
     v << (c[i] - mean).cross(n[i]), n[i];
     m.noalias() += w[i] * v * v.transpose();
   }
-  const Eigen::Matrix3d m11 = m.topLeftCorner<3, 3>(), m12 = m.topRightCorner<3, 3>(),
-                        m22 = m.bottomRightCorner<3, 3>();
+  const Eigen::Matrix3d m11 = m.topLeftCorner<3, 3>(), m12 = m.topRightCorner<3, 3>();
+  Eigen::Matrix3d m22 = m.bottomRightCorner<3, 3>();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> normals(m22);
   // the middle eigenvalue of the normals' moments: 0 on a plane; a cylinder's normals
   // spread over a plane, a cone's and a torus's over more
   if(!(normals.eigenvalues()(1) > 1e-3 * m22.trace())) return false;
+  // A cylinder's normals miss its axis's direction (its smallest eigenvalue is 0): the
+  // normal lines meet a helix of any pitch as well as the axis. A tiny ridge makes the
+  // solve take the axis (no moment along the direction), and leaves every other case
+  // as it is.
+  m22 += 1e-9 * m22.trace() * Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d x = m22.ldlt().solve(m12.transpose());
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axis(m11 - m12 * x);
   direction = axis.eigenvectors().col(0);
