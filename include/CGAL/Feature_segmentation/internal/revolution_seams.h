@@ -43,10 +43,12 @@ namespace internal {
 // generated ones at 0.1% and 0.3% noise of the diagonal (manual, Creases).
 struct Revolution_seams
 {
-  // the fewest faces of a region that is looked at
+  // the fewest faces of a region that is looked at (100 and 400 give the same means over
+  // three noise realisations)
   static constexpr std::size_t least_faces = 200;
   // rounds of averaging the raw normals over the faces sharing a vertex before the axis
-  // is fitted (the raw normals of a heavily noisy mesh are off by 20 to 40 degrees)
+  // is fitted (the raw normals of a heavily noisy mesh are off by 20 to 40 degrees; 3
+  // and 8 rounds give the means within 0.0015)
   static constexpr int smoothing_rounds = 5;
   // the profile's spread (the root mean square distance of the centroids from straight
   // pieces or arcs over windows of `noise_bins` bins) may be at most this many times the
