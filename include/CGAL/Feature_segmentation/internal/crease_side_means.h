@@ -117,9 +117,7 @@ std::size_t add_side_mean_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   std::vector<Eigen::Vector3d> middle, direction;
   std::vector<double> length;
   edge_middles_and_directions(idx, vpm, middle, direction, &length);
-  // the median edge length: the mean is longer on meshes with slivers
-  std::nth_element(length.begin(), length.begin() + ne / 2, length.end());
-  const double w = ne > 0 ? length[ne / 2] : 0.;
+  const double w = median_length(length);
   const double radius = Limits::radius * w, offset = Limits::ridge_offset * w;
   const double to_degrees = 180. / CGAL_PI;
 

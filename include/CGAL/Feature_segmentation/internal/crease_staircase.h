@@ -83,6 +83,15 @@ double edge_middles_and_directions(const Mesh_indexing<TriangleMesh>& idx, VPM v
   return ne > 0 ? sum / double(ne) : 0.;
 }
 
+// The median of the edge lengths `length` (reordered; 0 if empty): the length unit of
+// the noisy-mesh crease rules (the mean is longer on meshes with slivers).
+inline double median_length(std::vector<double>& length)
+{
+  if(length.empty()) return 0.;
+  std::nth_element(length.begin(), length.begin() + std::ptrdiff_t(length.size() / 2), length.end());
+  return length[length.size() / 2];
+}
+
 // Per edge of the mesh of `idx`, whether it is a candidate (nonzero in `candidate`) with
 // another candidate nearly parallel to it on both sides (Crease_staircase): the
 // candidates met on the faces reached from its two faces across edges, staying within

@@ -297,7 +297,6 @@ inline std::vector<std::size_t> revolution_pieces(const std::vector<std::size_t>
   }
   if(bins < 2 * Limits::least_bins || bins < Limits::noise_bins) return {};
   // prefix moments per bin, about the profile's mean
-  Profile_moments total;
   std::vector<Profile_moments> per_bin(bins);
   double mz = 0., mr = 0., wsum = 0.;
   for(std::size_t i = 0; i < n; ++i)
@@ -364,8 +363,7 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   std::vector<Eigen::Vector3d> middle, direction;
   std::vector<double> length;
   edge_middles_and_directions(idx, vpm, middle, direction, &length);
-  std::nth_element(length.begin(), length.begin() + ne / 2, length.end());
-  const double median_edge = length[ne / 2];
+  const double median_edge = median_length(length);
   // the smoothed normals
   std::vector<Eigen::Vector3d> smooth = normal, next(nf);
   for(int round = 0; round < Limits::smoothing_rounds; ++round)
