@@ -2,7 +2,8 @@
 // on exact normals of a tilted torus and cylinder and refuses a plane; the pieces of a profile are the
 // brute-force optimum; on a noisy cylinder running tangentially into a sphere the seam
 // circle is found within a few rows and parts the two; a noisy cylinder alone, a noisy
-// elliptic cylinder (no surface of revolution) and a noisy plane get none.
+// elliptic cylinder (no surface of revolution) and a noisy plane get none; a bent pipe,
+// exact and noisy, is cut at its two tangent joints into its straight pieces and arc.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
@@ -261,6 +262,116 @@ BOOST_AUTO_TEST_CASE(one_piece_or_no_surface_of_revolution_gets_none)
     revolution_seams_of(m, idx, marked);
     BOOST_TEST(marked == 0u);
   }
+}
+
+// A round tube of radius 1.5 bent along a planar spine: 10 straight along z, a quarter
+// circle of radius 6 in the xz plane, 12 straight along x (the generated bent pipe's
+// outer wall), 32 facets round (0.29) and 105 rows along the spine's length 31.42 (0.30),
+// every vertex moved along the tube's normal by add_noise_along() of `amplitude`. Its
+// joints (spine lengths 10 and 19.42) are tangent seams: no dihedral angle marks them.
+struct Bent_pipe
+{
+  static constexpr double radius = 1.5, bend = 6., first = 10., last = 12.;
+  static double joint(int k) { return k == 0 ? first : first + bend * M_PI / 2; }
+  static double length() { return joint(1) + last; }
+  // the spine's point and the bend plane's unit normal N (towards the bend's centre on
+  // the arc) at spine length t; the binormal is y
+  static void frame(double t, Eigen::Vector3d& c, Eigen::Vector3d& n)
+  {
+    if(t <= first)
+    {
+      c = Eigen::Vector3d(0, 0, t);
+      n = Eigen::Vector3d(1, 0, 0);
+    }
+    else if(t <= joint(1))
+    {
+      const double phi = (t - first) / bend;
+      c = Eigen::Vector3d(bend - bend * std::cos(phi), 0, first + bend * std::sin(phi));
+      n = Eigen::Vector3d(std::cos(phi), 0, -std::sin(phi));
+    }
+    else
+    {
+      c = Eigen::Vector3d(bend + t - joint(1), 0, first + bend);
+      n = Eigen::Vector3d(0, 0, -1);
+    }
+  }
+  // the spine length of a point within the radius of the spine
+  static double spine_length(const Eigen::Vector3d& p)
+  {
+    const double phi = std::atan2(p.z() - first, bend - p.x());
+    if(phi < 0) return p.z();
+    if(phi > M_PI / 2) return joint(1) + p.x() - bend;
+    return first + bend * phi;
+  }
+  static fs_test::Soup soup(double amplitude)
+  {
+    std::vector<std::array<double, 3> > normal;
+    fs_test::Soup s = fs_test::parametric_grid(32, 105, true, false, [&](double u, double v) {
+      Eigen::Vector3d c, n;
+      frame(v * length(), c, n);
+      const double a = 2 * M_PI * u;
+      const Eigen::Vector3d d = std::cos(a) * n + std::sin(a) * Eigen::Vector3d(0, 1, 0);
+      normal.push_back({ d.x(), d.y(), d.z() });
+      const Eigen::Vector3d q = c + radius * d;
+      return std::array<double, 3>{ q.x(), q.y(), q.z() };
+    });
+    fs_test::add_noise_along(s, normal, amplitude);
+    return s;
+  }
+};
+
+// The marked edges of a bent pipe: per joint, how many, and how far (along the spine)
+// the farthest of their vertices is from it; and the regions they bound.
+void check_pipe_seams(double amplitude, double tolerance)
+{
+  const SM m = fs_test::to_mesh<SM>(Bent_pipe::soup(amplitude));
+  const I::Mesh_indexing<SM> idx(m);
+  std::size_t marked = 0;
+  const std::vector<char> is_crease = revolution_seams_of(m, idx, marked);
+  std::size_t count[2] = { 0, 0 };
+  double farthest[2] = { 0., 0. };
+  for(std::size_t e = 0; e < is_crease.size(); ++e)
+  {
+    if(!is_crease[e]) continue;
+    BOOST_TEST(is_crease[e] == 2); // a curvature discontinuity
+    const auto h = halfedge(idx.edge_at(e), m);
+    double t[2];
+    for(int k = 0; k < 2; ++k)
+    {
+      const auto& q = m.point(k == 0 ? source(h, m) : target(h, m));
+      t[k] = Bent_pipe::spine_length(Eigen::Vector3d(q.x(), q.y(), q.z()));
+    }
+    const double mid = 0.5 * (t[0] + t[1]);
+    const int j = std::abs(mid - Bent_pipe::joint(0)) < std::abs(mid - Bent_pipe::joint(1)) ? 0 : 1;
+    ++count[j];
+    for(double tk : t) farthest[j] = (std::max)(farthest[j], std::abs(tk - Bent_pipe::joint(j)));
+  }
+  BOOST_TEST_MESSAGE("amplitude " << amplitude << ": " << count[0] << " and " << count[1] << " edges, at most "
+                                  << farthest[0] << " and " << farthest[1] << " from the joints");
+  BOOST_TEST(marked == count[0] + count[1]);
+  for(int j = 0; j < 2; ++j)
+  {
+    // a closed ring round the tube takes at least one edge per facet
+    BOOST_TEST(count[j] >= 32u);
+    BOOST_TEST(farthest[j] <= tolerance);
+  }
+  // the seams part the straight pieces from the arc: three regions
+  const std::vector<std::size_t> root = I::face_components(idx, [&](std::size_t e) { return !is_crease[e]; });
+  const std::set<std::size_t> regions(root.begin(), root.end());
+  BOOST_TEST(regions.size() == 3u);
+}
+
+BOOST_AUTO_TEST_CASE(bent_pipe_into_straight_pieces_and_arc)
+{
+  // Exact: the spine of the tube's faces is the spine up to the facets (a face's
+  // centroid and normal lie a little inside the tube), so the joints are cut on the rows
+  // that hold them (a row is 0.30 long, and a marked edge's far vertex one row off).
+  check_pipe_seams(0., 0.31);
+  // Noise uniform in +-0.1 along the normals (a standard deviation of 0.058, 0.2% of
+  // the diagonal 27.4, a fifth of an edge): a tangent joint is placed within about
+  // sqrt(2 R sigma) of it (the arc and the straight piece part by less than the noise
+  // within that length; R = 6 the bend's radius: 0.83), plus a row.
+  check_pipe_seams(0.1, 0.83 + 0.31);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
