@@ -80,6 +80,9 @@ struct Revolution_seams
   // its radius long: next to a noisy crease the spine bends into short end pieces
   // (two radii: the generated mean at 0.3% noise within 0.001 over three realisations).
   static constexpr double pipe_least_spread = 0.1;
+  // the least middle eigenvalue of the second moments of a pipe's normals (pipe_pieces():
+  // at least 1/4 on a tube)
+  static constexpr double pipe_least_normal_moment = 0.2;
   static constexpr double pipe_least_length = 1.;
 };
 
@@ -398,6 +401,21 @@ inline std::vector<std::size_t> pipe_pieces(const std::vector<std::size_t>& face
                                             const std::vector<Eigen::Vector3d>& normal, const std::vector<double>& area,
                                             double h)
 {
+  // A tube's normals cover the circle round its spine: the second moments of its
+  // normals have the eigenvalue 1/2 along the binormal of the spine's plane and two that
+  // add up to 1/2, so the middle one is at least 1/4. Planes (0) and fillets (0.18 for a
+  // quarter circle) are left alone without the search below.
+  Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
+  double weight = 0.;
+  for(std::size_t f : faces)
+  {
+    moments.noalias() += area[f] * normal[f] * normal[f].transpose();
+    weight += area[f];
+  }
+  if(!(weight > 0) ||
+     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(moments / weight, Eigen::EigenvaluesOnly).eigenvalues()(1) <
+       Revolution_seams::pipe_least_normal_moment)
+    return {};
   double dot = 0., norm2 = 0.;
   for(const auto& e : edges)
   {
