@@ -3,7 +3,9 @@
 // brute-force optimum; on a noisy cylinder running tangentially into a sphere the seam
 // circle is found within a few rows and parts the two; a noisy cylinder alone, a noisy
 // elliptic cylinder (no surface of revolution) and a noisy plane get none; a bent pipe,
-// exact and noisy, is cut at its two tangent joints into its straight pieces and arc.
+// exact and noisy, is cut at its two tangent joints into its straight pieces and arc; a
+// weak crease inside a noisy cylinder is unmarked, a strong one or one on an elliptic
+// cylinder stays.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
@@ -15,6 +17,7 @@
 #include "crease_test_geometry.h"
 #include "test_meshes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -224,6 +227,24 @@ BOOST_AUTO_TEST_CASE(cylinder_into_sphere_under_noise)
   BOOST_TEST(seams >= 64u);
 }
 
+// An elliptic cylinder (semi-axes 2 and 1, height 6; 64 facets round, 30 rows of 0.2)
+// with noise uniform in +-0.05 along its normals: no surface of revolution.
+fs_test::Soup noisy_elliptic_cylinder()
+{
+  fs_test::Soup s = fs_test::parametric_grid(64, 30, true, false, [](double u, double v) {
+    const double a = 2 * M_PI * u;
+    return std::array<double, 3>{ 2 * std::cos(a), std::sin(a), 6 * v };
+  });
+  std::vector<std::array<double, 3> > normal;
+  for(const auto& p : s.points)
+  {
+    const double nx = p[0] / 4, ny = p[1], len = std::hypot(nx, ny);
+    normal.push_back({ nx / len, ny / len, 0. });
+  }
+  fs_test::add_noise_along(s, normal, 0.05);
+  return s;
+}
+
 BOOST_AUTO_TEST_CASE(one_piece_or_no_surface_of_revolution_gets_none)
 {
   std::size_t marked = 0;
@@ -234,21 +255,10 @@ BOOST_AUTO_TEST_CASE(one_piece_or_no_surface_of_revolution_gets_none)
     revolution_seams_of(m, idx, marked);
     BOOST_TEST(marked == 0u);
   }
-  // a noisy elliptic cylinder (semi-axes 2 and 1, height 6): its normals meet no line, and
-  // about the best one its profile is no thin curve
+  // a noisy elliptic cylinder: its normals meet no line, and about the best one its
+  // profile is no thin curve
   {
-    fs_test::Soup s = fs_test::parametric_grid(64, 30, true, false, [](double u, double v) {
-      const double a = 2 * M_PI * u;
-      return std::array<double, 3>{ 2 * std::cos(a), std::sin(a), 6 * v };
-    });
-    std::vector<std::array<double, 3> > normal;
-    for(const auto& p : s.points)
-    {
-      const double nx = p[0] / 4, ny = p[1], len = std::hypot(nx, ny);
-      normal.push_back({ nx / len, ny / len, 0. });
-    }
-    fs_test::add_noise_along(s, normal, 0.05);
-    const SM m = fs_test::to_mesh<SM>(s);
+    const SM m = fs_test::to_mesh<SM>(noisy_elliptic_cylinder());
     const I::Mesh_indexing<SM> idx(m);
     revolution_seams_of(m, idx, marked);
     BOOST_TEST(marked == 0u);
@@ -372,6 +382,47 @@ BOOST_AUTO_TEST_CASE(bent_pipe_into_straight_pieces_and_arc)
   // sqrt(2 R sigma) of it (the arc and the straight piece part by less than the noise
   // within that length; R = 6 the bend's radius: 0.83), plus a row.
   check_pipe_seams(0.1, 0.83 + 0.31);
+}
+
+// The creases left after mark_revolution_seams() with crease angles: the ring of edges
+// at half height `middle` of a noisy surface 6 high, 30 rows of 0.2, 64 facets round,
+// marked as creases of `ring_angle` degrees.
+std::size_t creases_left(const SM& m, double middle, double ring_angle)
+{
+  const I::Mesh_indexing<SM> idx(m);
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  std::size_t ring = 0;
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), m);
+    if(std::abs(m.point(source(h, m)).z() - middle) < 0.01 && std::abs(m.point(target(h, m)).z() - middle) < 0.01)
+    {
+      is_crease[e] = 1;
+      angle[e] = ring_angle;
+      ++ring;
+    }
+  }
+  BOOST_TEST(ring == 64u);
+  const std::size_t marked = I::mark_revolution_seams(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
+                                                      g.begin, g.ring, is_crease, &angle);
+  BOOST_TEST(marked == 0u); // one piece above and below the ring: no seam
+  return std::size_t(std::count(is_crease.begin(), is_crease.end(), char(1)));
+}
+
+BOOST_AUTO_TEST_CASE(weak_creases_inside_a_piece_are_cleared)
+{
+  // A noisy cylinder (radius 1, 64 facets round) is one straight piece of its profile:
+  // the ring, a crease of 30 degrees (below Revolution_seams::clear_below_angle), is
+  // noise inside it and is unmarked; one of 70 degrees bounds the region and stays.
+  const SM cylinder = fs_test::to_mesh<SM>(fs_test::noisy_cylinder(1., 6., 64, 30, 0.05));
+  // (z from -3 to 3)
+  BOOST_TEST(creases_left(cylinder, 0., 30.) == 0u);
+  BOOST_TEST(creases_left(cylinder, 0., 70.) == 64u);
+  // on a noisy elliptic cylinder (z from 0 to 6), no surface of revolution, the weak
+  // ring stays
+  BOOST_TEST(creases_left(fs_test::to_mesh<SM>(noisy_elliptic_cylinder()), 3., 30.) == 64u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

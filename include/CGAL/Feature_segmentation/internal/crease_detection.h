@@ -341,8 +341,10 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   if(planes)
     mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, smooth ? crease_rough_plane_share : 0.);
-  // a noisy mesh's surfaces of revolution get the seams between their pieces
-  if(tangent && !smooth && filtered) mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease);
+  // a noisy mesh's surfaces of revolution and bent pipes get the seams between their
+  // pieces, and its surfaces of revolution lose the creases inside their pieces
+  if(tangent && !smooth && filtered)
+    mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease, &angle);
   if(clean) join_isolated_crease_faces(idx, angle, is_crease);
   else join_isolated_crease_faces(idx, angle, is_crease, crease_noisy_piece_max_faces, 180.);
   // a noisy mesh's crest lines weigh less whatever its creases (see above)

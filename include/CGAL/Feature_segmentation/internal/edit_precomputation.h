@@ -189,7 +189,19 @@ private:
     if(!cut.is_cut())
     {
       prepare_segmentation_data(tm, np, opt, d, lines, false, &times); // checked above
-      alpha_e = Edge_alphas(edge_alphas(d, opt, np), opt.alpha);
+      std::vector<double> a = edge_alphas(d, opt, np);
+      // a CAD tessellation or a noisy mesh with no crease (Crease_cut::cad): its crest
+      // lines weigh less all the same, as on a mesh cut open along its creases (below)
+      if(cut.cad && !opt.crest_lines_on_clean_tessellations &&
+         is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value)
+        for(std::size_t e = 0; e < a.size(); ++e)
+        {
+          if(!d.features.is_feature_edge[e]) continue;
+          if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+            if(get(get_parameter(np, internal_np::edge_is_feature), d.idx.edge_at(e))) continue;
+          a[e] -= clean_crest_alpha_offset;
+        }
+      alpha_e = Edge_alphas(a, opt.alpha);
       first_tie = d.edge_vertices.size();
       d.features.number_of_feature_edges = count_feature_edges(d.features);
       return;
