@@ -94,7 +94,7 @@ struct Revolution_seams
   // piece, each at least `clear_margin` bins from the nearest cut between pieces, are
   // noise and are unmarked: over three noise realisations the development mean goes
   // from 0.950 to 0.954 at 0.1% noise and from 0.922 to 0.927 at 0.3%, the generated
-  // parts' from 0.759 to 0.765 at 0.3% (the coarse long tube 0.75 to 0.81); 50 degrees
+  // parts' from 0.759 to 0.765 at 0.3% (the coarse long tube 0.75 to 0.80); 50 degrees
   // gives the same means within 0.001, 60 cuts the torus of ABC 00006566 once in
   // three (0.3%: development 0.915).
   static constexpr double clear_below_angle = 55.;
