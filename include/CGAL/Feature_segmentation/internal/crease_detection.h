@@ -340,7 +340,8 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   }
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
   if(planes)
-    mark_plane_borders(idx, filtered_normal, area, centroid, diagonal, is_crease, smooth ? crease_rough_plane_share : 0.);
+    mark_plane_borders(idx, filtered_normal, normal, area, centroid, diagonal, is_crease,
+                       smooth ? crease_rough_plane_share : 0.);
   // a noisy mesh's surfaces of revolution and bent pipes get the seams between their
   // pieces, and its surfaces of revolution lose the creases inside their pieces
   if(tangent && !smooth && filtered)
