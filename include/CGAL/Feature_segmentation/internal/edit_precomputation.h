@@ -179,6 +179,34 @@ private:
   // feature edges, feature lines and edge alphas, given for the input mesh, are carried
   // over to its cut copy; then the ties are appended to the weight terms as extra edges
   // of the vertex graph (feature edges with the crease's alpha).
+  // Whether the crest lines weigh less (Crease_cut::cad, detected feature lines, and not
+  // crest_lines_on_clean_tessellations(true)).
+  template <typename NamedParameters>
+  bool weak_crests(const NamedParameters&) const
+  {
+    return cut.cad && !opt.crest_lines_on_clean_tessellations &&
+           CGAL::parameters::is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value;
+  }
+
+  // alpha_e on the feature edges of the working mesh that are no user feature edge
+  // (`input_edge(e)`: the input mesh's edge of working edge e): a seam line's is raised
+  // by Seam_thresholds::alpha_offset, a crest line's lowered by clean_crest_alpha_offset.
+  template <typename NamedParameters, typename InputEdge>
+  void weaken_crest_lines(std::vector<double>& a, const NamedParameters& np, InputEdge input_edge) const
+  {
+    const Segmentation_data<TriangleMesh>& d = *data;
+    for(std::size_t e = 0; e < a.size(); ++e)
+    {
+      if(!d.features.is_feature_edge[e]) continue;
+      if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+        if(get(CGAL::parameters::get_parameter(np, internal_np::edge_is_feature), input_edge(e))) continue;
+      if(!d.is_seam_edge.empty() && d.is_seam_edge[e])
+        a[e] += Seam_thresholds::alpha_offset;
+      else
+        a[e] -= clean_crest_alpha_offset;
+    }
+  }
+
   template <typename NamedParameters>
   void prepare(const TriangleMesh& tm, const NamedParameters& np, Stage_times& times)
   {
@@ -192,15 +220,7 @@ private:
       std::vector<double> a = edge_alphas(d, opt, np);
       // a CAD tessellation or a noisy mesh with no crease (Crease_cut::cad): its crest
       // lines weigh less all the same, as on a mesh cut open along its creases (below)
-      if(cut.cad && !opt.crest_lines_on_clean_tessellations &&
-         is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value)
-        for(std::size_t e = 0; e < a.size(); ++e)
-        {
-          if(!d.features.is_feature_edge[e]) continue;
-          if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
-            if(get(get_parameter(np, internal_np::edge_is_feature), d.idx.edge_at(e))) continue;
-          a[e] -= clean_crest_alpha_offset;
-        }
+      if(weak_crests(np)) weaken_crest_lines(a, np, [&](std::size_t e) { return d.idx.edge_at(e); });
       alpha_e = Edge_alphas(a, opt.alpha);
       first_tie = d.edge_vertices.size();
       d.features.number_of_feature_edges = count_feature_edges(d.features);
@@ -212,13 +232,10 @@ private:
     // mostly cut its curved faces apart (on a noisy one, along the rulings of its
     // cylinders and round its tori)
     Segmentation_options o = opt;
-    // crest lines on a CAD tessellation weigh less: alpha_e is alpha minus
-    // clean_crest_alpha_offset on their edges (crest_lines_on_clean_tessellations(true):
-    // the full alpha, as the paper)
-    const bool weak_crests = cut.cad && !opt.crest_lines_on_clean_tessellations &&
-                             is_default_parameter<NamedParameters, internal_np::feature_lines_t>::value;
-    // on a clean one, the seam lines join them, weighing alpha + Seam_thresholds::alpha_offset
-    o.detect_seam_lines = weak_crests && cut.clean && opt.tangent_discontinuities;
+    // crest lines on a CAD tessellation weigh less (weaken_crest_lines(); with
+    // crest_lines_on_clean_tessellations(true) the full alpha, as the paper), and on a
+    // clean one the seam lines join them, weighing alpha + Seam_thresholds::alpha_offset
+    o.detect_seam_lines = weak_crests(np) && cut.clean && opt.tangent_discontinuities;
     const Mesh_indexing<TriangleMesh>& in = *input_idx;
     const Mesh_indexing<TriangleMesh>& wi = d.idx;
     auto wvpm = get_const_property_map(CGAL::vertex_point, wm);
@@ -278,17 +295,7 @@ private:
     };
     if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_alpha_t>::value)
       for(std::size_t e = 0; e < a.size(); ++e) a[e] = user_alpha(cut.input_edge[e]);
-    if(weak_crests)
-      for(std::size_t e = 0; e < a.size(); ++e)
-      {
-        if(!d.features.is_feature_edge[e]) continue;
-        if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
-          if(get(get_parameter(np, internal_np::edge_is_feature), in.edge_at(cut.input_edge[e]))) continue;
-        if(!d.is_seam_edge.empty() && d.is_seam_edge[e])
-          a[e] += Seam_thresholds::alpha_offset;
-        else
-          a[e] -= clean_crest_alpha_offset;
-      }
+    if(weak_crests(np)) weaken_crest_lines(a, np, [&](std::size_t e) { return in.edge_at(cut.input_edge[e]); });
     first_tie = d.edge_vertices.size();
     {
       std::vector<std::size_t> begin(in.number_of_edges() + 1, 0);

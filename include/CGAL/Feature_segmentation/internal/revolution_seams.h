@@ -508,6 +508,35 @@ inline std::vector<std::size_t> pipe_pieces(const std::vector<std::size_t>& face
                       Revolution_seams::pipe_least_spread * h);
 }
 
+// The regions of faces that the interior edges e with `join(e)` join (face_components),
+// with, for each region of at least Revolution_seams::least_faces faces (by its root, the
+// smallest face index in it), its faces and the pairs of its faces adjacent across an
+// edge in index order; `edge_faces`: the two faces of each edge (npos on a border).
+struct Seam_regions
+{
+  std::vector<std::size_t> root;
+  std::vector<std::vector<std::size_t> > members;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > pairs;
+
+  template <typename TriangleMesh, typename Join>
+  Seam_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std::size_t>& edge_faces, Join join)
+    : root(face_components(idx, join)), members(root.size()), pairs(root.size())
+  {
+    for(std::size_t f = 0; f < root.size(); ++f) members[root[f]].push_back(f);
+    for(std::size_t e = 0; 2 * e < edge_faces.size(); ++e)
+    {
+      const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
+      if(f != idx.npos && g != idx.npos && root[f] == root[g] && fitted(root[f])) pairs[root[f]].emplace_back(f, g);
+    }
+  }
+
+  // whether f is the root of a region large enough to be fitted
+  bool fitted(std::size_t f) const
+  {
+    return root[f] == f && members[f].size() >= Revolution_seams::least_faces;
+  }
+};
+
 // Marks 2 in `is_crease` (a curvature discontinuity) the edges that are no crease and
 // part the faces of two pieces of the profile of a surface of revolution
 // (revolution_pieces()) or of the spine of a pipe (pipe_pieces(), for a region that is
@@ -534,10 +563,17 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   std::vector<double> length;
   edge_middles_and_directions(idx, vpm, middle, direction, &length);
   const double median_edge = median_length(length);
-  // the regions the creases bound
-  std::vector<std::size_t> root = face_components(idx, [&](std::size_t e) { return !is_crease[e]; });
-  std::vector<std::vector<std::size_t> > members(nf);
-  for(std::size_t f = 0; f < nf; ++f) members[root[f]].push_back(f);
+  // the two faces of each edge, and the regions the creases bound
+  std::vector<std::size_t> edge_faces(2 * ne, idx.npos);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    edge_faces[2 * e] = idx.face_id(h);
+    edge_faces[2 * e + 1] = idx.face_id(opposite(h, tm));
+  }
+  const Seam_regions regions(idx, edge_faces, [&](std::size_t e) { return !is_crease[e]; });
+  const std::vector<std::size_t>& root = regions.root;
+  const std::vector<std::vector<std::size_t> >& members = regions.members;
   // The normals averaged over the faces sharing a vertex, for the axes, and averaged so
   // within each region, for the spines: across a crease they bend towards the other
   // side, which bends a pipe's spine at its ends into short pieces, while the axes fit
@@ -560,19 +596,12 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
     smooth.swap(averaged);
     within.swap(next_within);
   }
-  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > pairs(nf);
-  std::vector<std::size_t> edge_faces(2 * ne, idx.npos);
-  for(std::size_t e = 0; e < ne; ++e)
-  {
-    const auto h = halfedge(idx.edge_at(e), tm);
-    const std::size_t f = idx.face_id(h), g = idx.face_id(opposite(h, tm));
-    edge_faces[2 * e] = f;
-    edge_faces[2 * e + 1] = g;
-    if(f != idx.npos && g != idx.npos && root[f] == root[g] && members[root[f]].size() >= Limits::least_faces)
-      pairs[root[f]].emplace_back(f, g);
-  }
   std::vector<std::size_t> piece(nf, 0);
   bool any = false;
+  // with `angle`, the profile pieces and cut distances of the regions that are surfaces
+  // of revolution, for the regions of the stronger creases that are the same regions
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> revolution_piece(angle ? nf : 0, none), revolution_distance(angle ? nf : 0, 0), distance;
   // the vertices' points, and per region that is no surface of revolution the normals
   // of its vertices (from its own faces) and its edges, for pipe_pieces()
   const std::size_t nv = idx.number_of_vertices();
@@ -586,8 +615,14 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   std::vector<std::pair<std::size_t, std::size_t> > region_edges;
   for(std::size_t f = 0; f < nf; ++f)
   {
-    if(root[f] != f || members[f].size() < Limits::least_faces) continue;
-    std::vector<std::size_t> p = revolution_pieces(members[f], pairs[f], centroid, smooth, area, median_edge);
+    if(!regions.fitted(f)) continue;
+    std::vector<std::size_t> p = revolution_pieces(members[f], regions.pairs[f], centroid, smooth, area, median_edge,
+                                                   angle ? &distance : nullptr);
+    for(std::size_t i = 0; angle && i < p.size(); ++i)
+    {
+      revolution_piece[members[f][i]] = p[i];
+      revolution_distance[members[f][i]] = distance[i];
+    }
     if(p.empty())
     {
       region_edges.clear();
@@ -617,7 +652,7 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
       }
       for(std::size_t v : touched)
         if(vertex_normal[v].squaredNorm() > 0) vertex_normal[v].normalize();
-      p = pipe_pieces(members[f], pairs[f], region_edges, point, vertex_normal, centroid, within, area, median_edge);
+      p = pipe_pieces(members[f], regions.pairs[f], region_edges, point, vertex_normal, centroid, within, area, median_edge);
     }
     for(std::size_t i = 0; i < p.size(); ++i)
     {
@@ -629,34 +664,35 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   if(angle)
   {
     const double strong = Limits::clear_below_angle;
-    const std::vector<std::size_t> outer =
-      face_components(idx, [&](std::size_t e) { return !(is_crease[e] == 1 && (*angle)[e] >= strong); });
-    std::vector<std::vector<std::size_t> > outer_members(nf);
-    for(std::size_t f = 0; f < nf; ++f) outer_members[outer[f]].push_back(f);
-    std::vector<std::vector<std::pair<std::size_t, std::size_t> > > outer_pairs(nf);
-    for(std::size_t e = 0; e < ne; ++e)
-    {
-      const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
-      if(f != idx.npos && g != idx.npos && outer[f] == outer[g] && outer_members[outer[f]].size() >= Limits::least_faces)
-        outer_pairs[outer[f]].emplace_back(f, g);
-    }
-    const std::size_t none = std::size_t(-1);
-    std::vector<std::size_t> outer_piece(nf, none), cut_distance(nf, 0), distance;
+    const Seam_regions outer(idx, edge_faces,
+                             [&](std::size_t e) { return !(is_crease[e] == 1 && (*angle)[e] >= strong); });
+    std::vector<std::size_t> outer_piece(nf, none), cut_distance(nf, 0);
     for(std::size_t f = 0; f < nf; ++f)
     {
-      if(outer[f] != f || outer_members[f].size() < Limits::least_faces) continue;
+      if(!outer.fitted(f)) continue;
+      const std::vector<std::size_t>& faces = outer.members[f];
+      if(faces.size() == members[root[f]].size())
+      {
+        // the region the creases bound, fitted above (the same faces, the same pairs)
+        for(std::size_t g : faces)
+        {
+          outer_piece[g] = revolution_piece[g];
+          cut_distance[g] = revolution_distance[g];
+        }
+        continue;
+      }
       const std::vector<std::size_t> p =
-        revolution_pieces(outer_members[f], outer_pairs[f], centroid, smooth, area, median_edge, &distance);
+        revolution_pieces(faces, outer.pairs[f], centroid, smooth, area, median_edge, &distance);
       for(std::size_t i = 0; i < p.size(); ++i)
       {
-        outer_piece[outer_members[f][i]] = p[i];
-        cut_distance[outer_members[f][i]] = distance[i];
+        outer_piece[faces[i]] = p[i];
+        cut_distance[faces[i]] = distance[i];
       }
     }
     for(std::size_t e = 0; e < ne; ++e)
     {
       const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
-      if(is_crease[e] != 1 || (*angle)[e] >= strong || f == idx.npos || g == idx.npos || outer[f] != outer[g] ||
+      if(is_crease[e] != 1 || (*angle)[e] >= strong || f == idx.npos || g == idx.npos || outer.root[f] != outer.root[g] ||
          outer_piece[f] == none || outer_piece[f] != outer_piece[g] || cut_distance[f] < Limits::clear_margin ||
          cut_distance[g] < Limits::clear_margin)
         continue;
