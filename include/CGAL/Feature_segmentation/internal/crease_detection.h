@@ -235,9 +235,9 @@ constexpr double crease_rough_plane_share = 0.2;
 // (mark_tangent_discontinuities), marked 2; on a noisy one (raw roughness above
 // Crease_gap::raw_roughness) and if `tangent`, the borders of its planes on the filtered
 // normals (mark_plane_borders), marked 2, and so on any other rough one whose planes
-// hold crease_rough_plane_share of its area or more; on a noisy one and if `tangent`
-// also the seams between the pieces of its surfaces of revolution
-// (mark_revolution_seams), marked 2; a piece of one or two faces (if not clean, of up
+// hold crease_rough_plane_share of its area or more; on a noisy one and on a rough one
+// whose planes hold that share, and if `tangent`, also the seams between the pieces of
+// its surfaces of revolution and bent pipes (mark_revolution_seams), marked 2; a piece of one or two faces (if not clean, of up
 // to crease_noisy_piece_max_faces) that these would cut out keeps its flattest edge
 // (join_isolated_crease_faces). `angle` receives the filtered angles (of a crease of a
 // heavily noisy mesh, the larger of the two filters'), `clean` whether the tessellation
@@ -339,12 +339,15 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
                           lightly_noisy ? Side_mean_creases::narrower_light : Side_mean_creases::narrower);
   }
   if(tangent && clean) mark_tangent_discontinuities(idx, vpm, raw, area, diagonal, is_crease);
+  double plane_share = 0.;
   if(planes)
-    mark_plane_borders(idx, filtered_normal, normal, area, centroid, diagonal, is_crease,
-                       smooth ? crease_rough_plane_share : 0.);
-  // a noisy mesh's surfaces of revolution and bent pipes get the seams between their
-  // pieces, and its surfaces of revolution lose the creases inside their pieces
-  if(tangent && !smooth && filtered)
+    plane_share = mark_plane_borders(idx, filtered_normal, normal, area, centroid, diagonal, is_crease,
+                                     smooth ? crease_rough_plane_share : 0.);
+  // the surfaces of revolution and bent pipes of a noisy mesh, and of a rough one whose
+  // planes hold crease_rough_plane_share of its area (a CAD part with light noise, as
+  // for the plane borders), get the seams between their pieces, and its surfaces of
+  // revolution lose the creases inside their pieces
+  if(tangent && filtered && (!smooth || plane_share >= crease_rough_plane_share))
     mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease, &angle);
   if(clean) join_isolated_crease_faces(idx, angle, is_crease);
   else join_isolated_crease_faces(idx, angle, is_crease, crease_noisy_piece_max_faces, 180.);
