@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -423,6 +424,73 @@ BOOST_AUTO_TEST_CASE(weak_creases_inside_a_piece_are_cleared)
   // on a noisy elliptic cylinder (z from 0 to 6), no surface of revolution, the weak
   // ring stays
   BOOST_TEST(creases_left(fs_test::to_mesh<SM>(noisy_elliptic_cylinder()), 3., 30.) == 64u);
+}
+
+BOOST_AUTO_TEST_CASE(lightly_noisy_hopper_gets_its_seams)
+{
+  // A hopper round the z axis, 64 facets round: a disk at z = 9 (radii 0.5 to 5, 9
+  // rows), a bin wall of radius 5 down to z = 6 (6 rows), a cone down to radius 1 at
+  // z = 0 (14 rows) and a spout of radius 1 down to z = -3 (6 rows); the cone bends from
+  // the wall and the spout by 33.7 degrees. Noise uniform in +-0.02 along the normals
+  // (0.1% of the diagonal 16.6) makes it rough but not noisy, as a smooth model: its
+  // filter blurs those bends. Its disk holds a fifth of its area or more, so it gets the
+  // plane borders and the revolution seams as a noisy mesh does.
+  const std::array<std::array<double, 2>, 5> corner{ { { 9., 0.5 }, { 9., 5. }, { 6., 5. }, { 0., 1. }, { -3., 1. } } };
+  const std::array<int, 4> segment_rows{ 9, 6, 14, 6 };
+  auto profile = [&](double j) {
+    j = (std::max)(0., (std::min)(35., j));
+    for(int k = 0; k < 4; ++k)
+    {
+      if(j <= segment_rows[k] || k == 3)
+      {
+        const double t = (std::min)(1., j / segment_rows[k]);
+        return std::array<double, 2>{ corner[k][0] + t * (corner[k + 1][0] - corner[k][0]),
+                                      corner[k][1] + t * (corner[k + 1][1] - corner[k][1]) };
+      }
+      j -= segment_rows[k];
+    }
+    return corner[4];
+  };
+  const SM m = fs_test::to_mesh<SM>(noisy_revolution(64, 35, profile, 0.02));
+  const I::Mesh_indexing<SM> idx(m);
+  std::vector<Eigen::Vector3d> normal, centroid;
+  std::vector<double> area;
+  I::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
+  std::vector<std::uint32_t> begin, ring;
+  I::vertex_adjacent_faces(idx, begin, ring);
+  const double roughness = I::normal_roughness(normal, begin, ring);
+  BOOST_TEST_MESSAGE("roughness " << roughness);
+  BOOST_REQUIRE(roughness > I::crease_filter_roughness);
+  BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);
+
+  const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
+  // both circles of the cone, z = 6 and z = 0, marked round the axis (an edge per facet
+  // or more) within a row (0.5) of the circle
+  std::array<std::size_t, 2> on_circle{ 0, 0 };
+  std::size_t seams = 0;
+  for(std::size_t e = 0; e < detected.is_crease.size(); ++e)
+  {
+    if(!detected.is_crease[e]) continue;
+    seams += detected.is_crease[e] == 2;
+    const auto h = halfedge(idx.edge_at(e), m);
+    const double z0 = m.point(source(h, m)).z(), z1 = m.point(target(h, m)).z();
+    for(int c = 0; c < 2; ++c)
+    {
+      const double at = c == 0 ? 6. : 0.;
+      if(std::abs(z0 - at) <= 0.55 && std::abs(z1 - at) <= 0.55) ++on_circle[c];
+    }
+  }
+  BOOST_TEST_MESSAGE("marked on the circles: " << on_circle[0] << ", " << on_circle[1] << "; seams " << seams);
+  BOOST_TEST(on_circle[0] >= 64u);
+  BOOST_TEST(on_circle[1] >= 64u);
+  BOOST_TEST(seams > 0u);
+  // the disk, the wall, the cone and the spout: four regions of a row or more
+  const std::vector<std::size_t> root = I::face_components(idx, [&](std::size_t e) { return !detected.is_crease[e]; });
+  std::map<std::size_t, std::size_t> size;
+  for(std::size_t r : root) ++size[r];
+  std::size_t regions = 0;
+  for(const auto& r : size) regions += r.second >= 64u;
+  BOOST_TEST(regions == 4u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
