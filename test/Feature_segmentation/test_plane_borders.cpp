@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
+#include "crease_test_geometry.h"
 #include "test_meshes.h"
 
 #include <algorithm>
@@ -218,13 +219,9 @@ BOOST_AUTO_TEST_CASE(lightly_noisy_fillet_gets_borders_where_planes_dominate)
   namespace I = FS::internal;
   const SM m = fs_test::to_mesh<SM>(noisy_filleted_corner(0.002));
   const I::Mesh_indexing<SM> idx(m);
-  const auto vpm = get(CGAL::vertex_point, m);
-  std::vector<Eigen::Vector3d> normal, centroid;
-  std::vector<double> area;
-  I::face_geometry(idx, vpm, normal, area, centroid);
-  std::vector<std::uint32_t> begin, ring;
-  I::vertex_adjacent_faces(idx, begin, ring);
-  const double roughness = I::normal_roughness(normal, begin, ring);
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+  const std::vector<Eigen::Vector3d>& normal = g.normal;
+  const double roughness = g.roughness;
   BOOST_TEST_MESSAGE("roughness " << roughness);
   BOOST_REQUIRE(roughness > I::crease_filter_roughness);
   BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);
@@ -249,15 +246,15 @@ BOOST_AUTO_TEST_CASE(lightly_noisy_fillet_gets_borders_where_planes_dominate)
   // the planes' share as mark_plane_borders() measures it on the filtered normals; asked
   // for more, it marks nothing
   const std::vector<Eigen::Vector3d> filtered =
-    I::filter_face_normals(normal, roughness, area, centroid, begin, ring, I::crease_smooth_filter_iterations,
+    I::filter_face_normals(normal, roughness, g.area, g.centroid, g.begin, g.ring, I::crease_smooth_filter_iterations,
                            I::crease_filter_sigma_r, I::crease_filter_roughness);
   const double total = 2. + 0.5 * pi * fillet_radius, row = 0.5 * pi * fillet_radius / fillet_segments;
   std::vector<char> none(idx.number_of_edges(), 0), all(idx.number_of_edges(), 0);
-  const double share = I::mark_plane_borders(idx, filtered, normal, area, centroid, 2., all, 0.);
+  const double share = I::mark_plane_borders(idx, filtered, normal, g.area, g.centroid, 2., all, 0.);
   BOOST_TEST(share >= (2. - 4 * row) / total);
   BOOST_TEST(share <= (2. + 4 * row) / total);
   BOOST_TEST(std::count(all.begin(), all.end(), char(2)) >= 2 * rulings);
-  BOOST_TEST(I::mark_plane_borders(idx, filtered, normal, area, centroid, 2., none, share + 0.01) == share);
+  BOOST_TEST(I::mark_plane_borders(idx, filtered, normal, g.area, g.centroid, 2., none, share + 0.01) == share);
   BOOST_TEST(std::count(none.begin(), none.end(), char(0)) == std::ptrdiff_t(none.size()));
 }
 

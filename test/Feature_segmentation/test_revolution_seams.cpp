@@ -453,12 +453,7 @@ BOOST_AUTO_TEST_CASE(lightly_noisy_hopper_gets_its_seams)
   };
   const SM m = fs_test::to_mesh<SM>(noisy_revolution(64, 35, profile, 0.02));
   const I::Mesh_indexing<SM> idx(m);
-  std::vector<Eigen::Vector3d> normal, centroid;
-  std::vector<double> area;
-  I::face_geometry(idx, get(CGAL::vertex_point, m), normal, area, centroid);
-  std::vector<std::uint32_t> begin, ring;
-  I::vertex_adjacent_faces(idx, begin, ring);
-  const double roughness = I::normal_roughness(normal, begin, ring);
+  const double roughness = fs_test::face_geometry_of(idx).roughness;
   BOOST_TEST_MESSAGE("roughness " << roughness);
   BOOST_REQUIRE(roughness > I::crease_filter_roughness);
   BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);

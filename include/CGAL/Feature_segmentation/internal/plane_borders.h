@@ -177,7 +177,8 @@ double mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vec
         cc += area[f] * dc * dc.transpose();
         nc += area[f] * (normal[f] - n_mean) * dc.transpose();
       }
-      const Eigen::Matrix3d gradient = nc * cc.completeOrthogonalDecomposition().pseudoInverse();
+      const Eigen::Matrix3d cc_inverse = cc.completeOrthogonalDecomposition().pseudoInverse();
+      const Eigen::Matrix3d gradient = nc * cc_inverse;
       double trend = 0.;
       for(Id f : members) trend += area[f] * (gradient * (centroid[f] - c_mean)).squaredNorm();
       trend = std::sqrt(trend / total) * to_degrees;
@@ -190,7 +191,7 @@ double mark_plane_borders(const Mesh_indexing<TriangleMesh>& idx, const std::vec
         r_mean /= total;
         Eigen::Matrix3d rc = Eigen::Matrix3d::Zero();
         for(Id f : members) rc += area[f] * (raw[f] - r_mean) * (centroid[f] - c_mean).transpose();
-        const Eigen::Matrix3d raw_gradient = rc * cc.completeOrthogonalDecomposition().pseudoInverse();
+        const Eigen::Matrix3d raw_gradient = rc * cc_inverse;
         double raw_trend = 0.;
         for(Id f : members) raw_trend += area[f] * (raw_gradient * (centroid[f] - c_mean)).squaredNorm();
         plane = std::sqrt(raw_trend / total) * to_degrees <= Limits::raw_trend;
