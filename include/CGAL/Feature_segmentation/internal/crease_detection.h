@@ -237,8 +237,9 @@ constexpr double crease_rough_plane_share = 0.2;
 // normals (mark_plane_borders), marked 2, and so on any other rough one whose planes
 // hold crease_rough_plane_share of its area or more; on a noisy one and on a rough one
 // whose planes hold that share, and if `tangent`, also the seams between the pieces of
-// its surfaces of revolution and bent pipes (mark_revolution_seams), marked 2; a piece of one or two faces (if not clean, of up
-// to crease_noisy_piece_max_faces) that these would cut out keeps its flattest edge
+// its surfaces of revolution and bent pipes (mark_revolution_seams), marked 2; a piece
+// of one or two faces (if not clean, of up to crease_noisy_piece_max_faces) that these
+// would cut out keeps its flattest edge
 // (join_isolated_crease_faces). `angle` receives the filtered angles (of a crease of a
 // heavily noisy mesh, the larger of the two filters'), `clean` whether the tessellation
 // is clean, `cad` whether its crest lines weigh less, as those of a CAD

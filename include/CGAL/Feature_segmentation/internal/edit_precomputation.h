@@ -175,10 +175,6 @@ private:
     return (id % 2 == 0) ? h : opposite(h, data->idx.mesh());
   }
 
-  // The precomputation on the working mesh: the user's vertex point map, curvature map,
-  // feature edges, feature lines and edge alphas, given for the input mesh, are carried
-  // over to its cut copy; then the ties are appended to the weight terms as extra edges
-  // of the vertex graph (feature edges with the crease's alpha).
   // Whether the crest lines weigh less (Crease_cut::cad, detected feature lines, and not
   // crest_lines_on_clean_tessellations(true)).
   template <typename NamedParameters>
@@ -207,6 +203,10 @@ private:
     }
   }
 
+  // The precomputation on the working mesh: the user's vertex point map, curvature map,
+  // feature edges, feature lines and edge alphas, given for the input mesh, are carried
+  // over to its cut copy; then the ties are appended to the weight terms as extra edges
+  // of the vertex graph (feature edges with the crease's alpha).
   template <typename NamedParameters>
   void prepare(const TriangleMesh& tm, const NamedParameters& np, Stage_times& times)
   {

@@ -20,7 +20,7 @@
 // lines pass through its spine at the pipe's radius, so the centroids moved inwards by
 // that radius along their normals collapse onto the spine, a planar chain of straight
 // pieces (cylinders) and arcs (tori) that the same dynamic programming cuts.
-// Under heavy noise creases also appear inside such faces; where stronger creases bound
+// Under noise creases also appear inside such faces; where stronger creases bound
 // a surface of revolution of a thin profile, the weaker ones within one of its pieces
 // are noise and are unmarked.
 
