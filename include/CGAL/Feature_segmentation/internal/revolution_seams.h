@@ -40,6 +40,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -89,9 +90,10 @@ struct Revolution_seams
   static constexpr double pipe_least_normal_moment = 0.2;
   // A cut between two pieces whose fits touch within `tangent_angle` degrees moves to
   // where they touch, by at most `seam_shift` bins (curve_pieces()): over three noise
-  // realisations the generated parts' mean goes from 0.922 to 0.946 at 0.1% noise and
-  // from 0.773 to 0.814 at 0.3% (the bent pipes 0.74 - 0.90 to 0.97 - 1.00, the turned
-  // parts 0.89 - 0.97 to 0.96 - 1.00), the development parts' means within 0.0005; 5
+  // realisations, with the refined radius of pipe_pieces(), the generated parts' mean
+  // goes from 0.922 to 0.946 at 0.1% noise and from 0.769 to 0.814 at 0.3% (the bent
+  // pipes 0.74 - 0.90 to 0.97 - 1.00, the turned parts 0.89 - 0.97 to 0.96 - 1.00), the
+  // development parts' rows unchanged; 5
   // degrees (noisy fits of a tangent joint are further apart) loses 0.026 of the
   // generated mean at 0.3%, 20 is within 0.001; 2 bins lose 0.018, 8 are the same.
   static constexpr double tangent_angle = 10.;
@@ -715,6 +717,15 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   const Seam_regions regions(idx, edge_faces, [&](std::size_t e) { return !is_crease[e]; });
   const std::vector<std::size_t>& root = regions.root;
   const std::vector<std::vector<std::size_t> >& members = regions.members;
+  // with `angle`, the regions that the creases of at least Limits::clear_below_angle bound
+  const double strong = Limits::clear_below_angle;
+  std::optional<Seam_regions> outer;
+  if(angle)
+    outer.emplace(idx, edge_faces, [&](std::size_t e) { return !(is_crease[e] == 1 && (*angle)[e] >= strong); });
+  // nothing to do without a region large enough to be fitted
+  bool fitted = false;
+  for(std::size_t f = 0; f < nf && !fitted; ++f) fitted = regions.fitted(f) || (outer && outer->fitted(f));
+  if(!fitted) return 0;
   // The normals averaged over the faces sharing a vertex, for the axes, and averaged so
   // within each region, for the spines: across a crease they bend towards the other
   // side, which bends a pipe's spine at its ends into short pieces, while the axes fit
@@ -802,16 +813,13 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
     }
   }
   // the creases inside one piece of a surface of revolution that stronger creases bound
-  if(angle)
+  if(outer)
   {
-    const double strong = Limits::clear_below_angle;
-    const Seam_regions outer(idx, edge_faces,
-                             [&](std::size_t e) { return !(is_crease[e] == 1 && (*angle)[e] >= strong); });
     std::vector<std::size_t> outer_piece(nf, none), cut_distance(nf, 0);
     for(std::size_t f = 0; f < nf; ++f)
     {
-      if(!outer.fitted(f)) continue;
-      const std::vector<std::size_t>& faces = outer.members[f];
+      if(!outer->fitted(f)) continue;
+      const std::vector<std::size_t>& faces = outer->members[f];
       if(faces.size() == members[root[f]].size())
       {
         // the region the creases bound, fitted above (the same faces, the same pairs)
@@ -823,7 +831,7 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
         continue;
       }
       const std::vector<std::size_t> p =
-        revolution_pieces(faces, outer.pairs[f], centroid, smooth, area, median_edge, &distance);
+        revolution_pieces(faces, outer->pairs[f], centroid, smooth, area, median_edge, &distance);
       for(std::size_t i = 0; i < p.size(); ++i)
       {
         outer_piece[faces[i]] = p[i];
@@ -833,7 +841,7 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
     for(std::size_t e = 0; e < ne; ++e)
     {
       const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
-      if(is_crease[e] != 1 || (*angle)[e] >= strong || f == idx.npos || g == idx.npos || outer.root[f] != outer.root[g] ||
+      if(is_crease[e] != 1 || (*angle)[e] >= strong || f == idx.npos || g == idx.npos || outer->root[f] != outer->root[g] ||
          outer_piece[f] == none || outer_piece[f] != outer_piece[g] || cut_distance[f] < Limits::clear_margin ||
          cut_distance[g] < Limits::clear_margin)
         continue;
