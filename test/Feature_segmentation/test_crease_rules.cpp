@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "crease_meshes.h"
+#include "crease_test_geometry.h"
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -168,6 +169,45 @@ BOOST_AUTO_TEST_CASE(the_ends_of_a_long_rod_are_creases)
   BOOST_TEST(seg.number_of_crease_edges() == std::size_t(2 * around)); // the two end rings only
   BOOST_TEST(seg.number_of_patches() == 3u);
   BOOST_TEST(fs_test::patches_are_sides(m, seg, side, 3));
+}
+
+// The same rod with light noise: every vertex of the side moved along its radius by up
+// to +-0.01 (add_noise_along()), the ends left planar. Its roughness (0.012) is above a
+// clean tessellation's and below a noisy mesh's, so its bends are tested on the raw
+// angles, where the side's 18-degree bends and the noise around them fill the band
+// round the ends; a bend of 85 degrees or more is a crease on every mesh, so the two end
+// rings stay creases (without that rule on rough meshes, no crease is left at all).
+BOOST_AUTO_TEST_CASE(the_ends_of_a_lightly_noisy_long_rod_are_creases)
+{
+  const int around = 20;
+  std::vector<int> side;
+  fs_test::Soup s = fs_test::closed_rod([](double, double) { return 1.; }, 40., around, 80, side);
+  std::vector<std::array<double, 3> > radial;
+  for(const auto& p : s.points)
+  {
+    const double r = std::hypot(p[0], p[1]);
+    radial.push_back(r > 0 ? std::array<double, 3>{ p[0] / r, p[1] / r, 0. } : std::array<double, 3>{ 0., 0., 0. });
+  }
+  fs_test::add_noise_along(s, radial, 0.01);
+  const SM m = fs_test::to_mesh<SM>(s);
+  const FS::internal::Mesh_indexing<SM> idx(m);
+  const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
+  BOOST_TEST(!detected.clean);
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+  const double roughness = FS::internal::normal_roughness(g.normal, g.begin, g.ring);
+  BOOST_TEST_MESSAGE("roughness " << roughness);
+  BOOST_TEST(roughness > FS::internal::crease_filter_roughness);
+  BOOST_TEST(roughness < FS::internal::Crease_gap::raw_roughness);
+  std::size_t ring = 0, other = 0;
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    if(!detected.is_crease[e]) continue;
+    const auto h = halfedge(idx.edge_at(e), m);
+    const int a = side[idx.face_id(h)], b = side[idx.face_id(opposite(h, m))];
+    (a != b ? ring : other) += 1;
+  }
+  BOOST_TEST(ring == std::size_t(2 * around)); // both end rings whole
+  BOOST_TEST(other == 0u);
 }
 
 // A clean tessellation whose creases cut it into its faces is a CAD part: its crest lines

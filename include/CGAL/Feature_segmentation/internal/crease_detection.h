@@ -326,7 +326,7 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
     }
   }
   keep_creases_with_gap(idx, vpm, angle, raw, raw_roughness, crease_angle, is_crease, parallel,
-                        clean ? Crease_gap::strong_angle : 360., planar);
+                        Crease_gap::strong_angle, planar);
   // a lightly noisy mesh also gets the moderate creases that its bilateral filter blurs
   // and those that its coarse facets hide, a heavily noisy one those that it wipes out
   if(!smooth && filtered)
