@@ -11,7 +11,8 @@
 // (cylinders, cones, planes) and circular arcs (tori, spheres) that thousands of faces
 // around the axis make plain. The profile is ordered along its length, cut into the
 // fewest pieces that fit within the noise (optimal segmentation by dynamic programming,
-// a penalty per piece), and the faces of different pieces are parted by seams.
+// a penalty per piece), a cut between two pieces that meet tangentially moves to where
+// their fits touch, and the faces of different pieces are parted by seams.
 // A region is left alone unless its profile is as thin as the noise of its surface: a
 // region that is no surface of revolution (a plane, a bent pipe, faces of several axes)
 // has no thin profile.
