@@ -94,9 +94,9 @@ struct Revolution_seams
   // realisations, with the refined radius of pipe_pieces(), the generated parts' mean
   // goes from 0.922 to 0.946 at 0.1% noise and from 0.769 to 0.814 at 0.3% (the bent
   // pipes 0.74 - 0.90 to 0.97 - 1.00, the turned parts 0.89 - 0.97 to 0.96 - 1.00), the
-  // development parts' rows unchanged; 5
-  // degrees (noisy fits of a tangent joint are further apart) loses 0.026 of the
-  // generated mean at 0.3%, 20 is within 0.001; 2 bins lose 0.018, 8 are the same.
+  // development parts' rows unchanged; 5 degrees (noisy fits of a tangent joint are
+  // further apart) loses 0.026 of the generated mean at 0.3%, 20 is within 0.001; 2
+  // bins lose 0.018, 8 are the same.
   static constexpr double tangent_angle = 10.;
   static constexpr double seam_shift = 4.;
   // Noise leaves creases inside the faces of a heavily noisy surface of revolution (the
@@ -703,10 +703,6 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   const TriangleMesh& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
   if(ne == 0) return 0;
-  std::vector<Eigen::Vector3d> middle, direction;
-  std::vector<double> length;
-  edge_middles_and_directions(idx, vpm, middle, direction, &length);
-  const double median_edge = median_length(length);
   // the two faces of each edge, and the regions the creases bound
   std::vector<std::size_t> edge_faces(2 * ne, idx.npos);
   for(std::size_t e = 0; e < ne; ++e)
@@ -727,6 +723,11 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
   bool fitted = false;
   for(std::size_t f = 0; f < nf && !fitted; ++f) fitted = regions.fitted(f) || (outer && outer->fitted(f));
   if(!fitted) return 0;
+  // the median edge length, the unit of the profiles' bins
+  std::vector<Eigen::Vector3d> middle, direction;
+  std::vector<double> length;
+  edge_middles_and_directions(idx, vpm, middle, direction, &length);
+  const double median_edge = median_length(length);
   // The normals averaged over the faces sharing a vertex, for the axes, and averaged so
   // within each region, for the spines: across a crease they bend towards the other
   // side, which bends a pipe's spine at its ends into short pieces, while the axes fit
