@@ -3,13 +3,15 @@
 // on face normals that a bilateral filter has cleaned of noise when the tessellation is
 // rough, kept where the gap test says they are no strong bend of a smooth surface, and
 // the curvature discontinuities: between flat regions on a clean tessellation, at the
-// borders of planes on a noisy one and on a rough one that is largely planes; used by
+// borders of planes on a noisy one and on a rough one that is largely planes, the seams
+// of surfaces of revolution and pipes, and the corners of rolling-ball blends; used by
 // crease_cut.h, which cuts the mesh open along them.
 
 #ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_DETECTION_H
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_CREASE_DETECTION_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/blend_corners.h>
 #include <CGAL/Feature_segmentation/internal/cad_tessellation.h>
 #include <CGAL/Feature_segmentation/internal/crease_gap_test.h>
 #include <CGAL/Feature_segmentation/internal/crease_narrow_filter.h>
@@ -350,6 +352,10 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   // revolution lose the creases inside their pieces
   if(tangent && filtered && (!smooth || plane_share >= crease_rough_plane_share))
     mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease, &angle);
+  // the corners of the rolling-ball blends that the marked edges bound, on the same
+  // meshes and on clean tessellations
+  if(tangent && (clean || (filtered && (!smooth || plane_share >= crease_rough_plane_share))))
+    mark_blend_corners(idx, normal, area, centroid, begin, ring, is_crease);
   if(clean) join_isolated_crease_faces(idx, angle, is_crease);
   else join_isolated_crease_faces(idx, angle, is_crease, crease_noisy_piece_max_faces, 180.);
   // a noisy mesh's crest lines weigh less whatever its creases (see above)

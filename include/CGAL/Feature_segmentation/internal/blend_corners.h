@@ -1,0 +1,320 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The corners of a rolling-ball blend: where the fillets of a fillet-rounded box or
+// housing meet, a ball of the fillets' radius R rolling along the edges of the inner
+// box leaves a sphere at each of its corners, tangent to the cylinders. Creases and
+// plane borders bound the whole fillet network as one region (manual, Creases), and
+// the seams between its cylinders and spheres carry no crease. What tells them apart is
+// the smaller principal curvature: 0 on a cylinder, 1/R on a sphere, while the larger is
+// 1/R on both. Per face, the shape operator is fitted by least squares to the changes
+// of the raw face normals over the faces of its region within half the blend's radius
+// (the differences of normals against those of the centroids, in the face's tangent
+// plane), so the support scales with the blend and not with the tessellation or the
+// diagonal: a coarse tessellation takes about one ring, a fine one more, which averages
+// a noisy mesh's normals. A region is a blend when the larger curvature is about
+// constant over it (the ratio of its quartiles); its faces whose smaller curvature
+// reaches half the larger (same sign) form candidate corners, and a candidate is a
+// corner when it is a piece of one sphere: its faces' centres of curvature (centroid
+// minus normal times R) gather round one point, where a strip of a cylinder or a torus
+// spreads them along its axis or spine as far as its centroids. The edges between a
+// corner and the rest of its region are marked as curvature discontinuities.
+
+#ifndef CGAL_FEATURE_SEGMENTATION_INTERNAL_BLEND_CORNERS_H
+#define CGAL_FEATURE_SEGMENTATION_INTERNAL_BLEND_CORNERS_H
+
+#include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/face_components.h>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Feature_segmentation {
+namespace internal {
+
+// The constants of the blend corners, chosen on the development and generated parts,
+// clean and at 0.1% and 0.3% noise (evaluate_quality; manual, Creases).
+struct Blend_corners
+{
+  // The least number of faces of a region that is looked at.
+  static constexpr std::size_t least_faces = 100;
+  // The faces whose normals a face's curvature is fitted to: those of its region within
+  // this fraction of the blend's radius (the inverse of the median larger curvature).
+  static constexpr double support = 0.5;
+  // ... and within this many times the median distance between adjacent centroids of
+  // the region (a blend tessellated finely has its curvature in a few rings, and the
+  // cost stays linear).
+  static constexpr double most_spacings = 4.;
+  // The largest ratio of the upper to the lower quartile of the larger curvature's
+  // magnitude in a blend: 1.03 to 1.3 on the generated rounded boxes clean and at 0.3%
+  // noise, about 3 on a noisy plane.
+  static constexpr double quartile_ratio = 1.6;
+  // A face of a candidate corner: its smaller curvature at least this fraction of the
+  // larger (0 on a cylinder, 1 on a sphere).
+  static constexpr double umbilic = 0.5;
+  // A blend's cylinders: most of its faces have a smaller curvature at most this
+  // fraction of the larger (a sphere bounded by creases has a few such faces where its
+  // fits are one-sided, at its rim).
+  static constexpr double cylinder = 0.25;
+  // The least number of faces of a corner.
+  static constexpr std::size_t least_corner_faces = 6;
+  // The least area of a corner, times the blend's curvature squared: a spherical
+  // triangle's area over R^2 is its angle excess, pi/2 (1.57) at a box's corner (1.37 to
+  // 1.8 measured on the generated boxes clean and noisy), pi/3 where a wedge of 60
+  // degrees meets a face; sphere-like pieces of tori measure about 0.5.
+  static constexpr double least_corner_area = 0.75;
+  // A corner's centres of curvature spread (root mean square distance to their mean)
+  // at most this fraction of its centroids' spread.
+  static constexpr double collapse = 0.3;
+};
+
+// The principal curvatures (k1 of the larger magnitude) of the shape operator fitted to
+// the normals `n` at points `c` of faces `js` around face f; false with fewer than
+// three neighbours or a singular fit.
+inline bool fitted_curvatures(std::size_t f, const std::vector<std::size_t>& js, const std::vector<Eigen::Vector3d>& c,
+                              const std::vector<Eigen::Vector3d>& n, double& k1, double& k2)
+{
+  if(js.size() < 3) return false;
+  const Eigen::Vector3d& nf = n[f];
+  Eigen::Vector3d u = nf.cross(Eigen::Vector3d::UnitX());
+  if(u.norm() < 0.1) u = nf.cross(Eigen::Vector3d::UnitY());
+  u.normalize();
+  const Eigen::Vector3d w = nf.cross(u);
+  // dn = S dp with S = [[a, b], [b, d]] in the basis (u, w): two equations per neighbour
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  for(std::size_t j : js)
+  {
+    const Eigen::Vector3d dp = c[j] - c[f], dn = n[j] - n[f];
+    const double x = dp.dot(u), y = dp.dot(w);
+    const Eigen::Vector3d r1(x, y, 0.), r2(0., x, y);
+    ata += r1 * r1.transpose() + r2 * r2.transpose();
+    atb += r1 * dn.dot(u) + r2 * dn.dot(w);
+  }
+  Eigen::LDLT<Eigen::Matrix3d> ldlt(ata);
+  if(ldlt.info() != Eigen::Success || !(std::abs(ldlt.vectorD().minCoeff()) > 1e-12 * ata.trace())) return false;
+  const Eigen::Vector3d s = ldlt.solve(atb);
+  const double mean = 0.5 * (s[0] + s[2]), dev = std::sqrt(0.25 * (s[0] - s[2]) * (s[0] - s[2]) + s[1] * s[1]);
+  const double a = mean + dev, b = mean - dev;
+  k1 = std::abs(a) >= std::abs(b) ? a : b;
+  k2 = std::abs(a) >= std::abs(b) ? b : a;
+  return std::isfinite(k1) && std::isfinite(k2);
+}
+
+// Marks 2 in `is_crease` the edges that are no crease and part a corner of a rolling-ball
+// blend (file comment) from the rest of its region, the regions being those that the
+// marked edges of `is_crease` bound. `normal`, `area`, `centroid`: the faces' raw unit
+// normals, areas and centroids; `begin`, `ring`: the faces sharing a vertex with each
+// face (vertex_adjacent_faces). Returns the number of edges marked.
+template <typename TriangleMesh>
+std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std::vector<Eigen::Vector3d>& normal,
+                               const std::vector<double>& area, const std::vector<Eigen::Vector3d>& centroid,
+                               const std::vector<std::uint32_t>& begin, const std::vector<std::uint32_t>& ring,
+                               std::vector<char>& is_crease)
+{
+  typedef Blend_corners Limits;
+  const TriangleMesh& tm = idx.mesh();
+  const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
+  if(ne == 0 || nf == 0) return 0;
+  std::vector<std::size_t> edge_faces(2 * ne, idx.npos);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), tm);
+    edge_faces[2 * e] = idx.face_id(h);
+    edge_faces[2 * e + 1] = idx.face_id(opposite(h, tm));
+  }
+  const std::vector<std::size_t> root = face_components(idx, [&](std::size_t e) { return !is_crease[e]; });
+  std::vector<std::vector<std::size_t> > members(nf);
+  for(std::size_t f = 0; f < nf; ++f) members[root[f]].push_back(f);
+
+  std::vector<double> k1(nf, 0.), k2(nf, 0.);
+  std::vector<char> fitted(nf, 0);
+  // per face, the mean centroid and normal over its support: their centre of curvature
+  // averages the noise of the normals out, and stays on a sphere's centre or a
+  // cylinder's axis
+  std::vector<Eigen::Vector3d> mean_point(nf), mean_normal(nf);
+  std::vector<std::size_t> stamp(nf, std::size_t(-1)), ball, front, following;
+  // the faces of f's region within `radius` of its centroid, reached through shared vertices
+  auto gather = [&](std::size_t f, double radius) {
+    ball.clear();
+    front.assign(1, f);
+    stamp[f] = f;
+    const double r2 = radius * radius;
+    while(!front.empty())
+    {
+      following.clear();
+      for(std::size_t g : front)
+        for(std::size_t i = begin[g]; i < begin[g + 1]; ++i)
+        {
+          const std::size_t j = ring[i];
+          if(stamp[j] == f || root[j] != root[f]) continue;
+          stamp[j] = f;
+          if((centroid[j] - centroid[f]).squaredNorm() > r2) continue;
+          ball.push_back(j);
+          following.push_back(j);
+        }
+      front.swap(following);
+    }
+  };
+
+  // per face, 0 or 1 + the number of its corner; per face of the region at hand, 1 for
+  // a candidate, 2 once in a component
+  std::vector<std::size_t> corner(nf, 0), component;
+  std::size_t corners = 0;
+  std::vector<char> state(nf, 0);
+  // the component of f across the non-crease edges, over the faces that `joins`; `beside`
+  // sees each face across a non-crease edge that it does not join
+  auto grow = [&](std::size_t f, auto&& joins, auto&& beside) {
+    component.assign(1, f);
+    state[f] = 2;
+    for(std::size_t i = 0; i < component.size(); ++i)
+    {
+      const auto h0 = halfedge(idx.face_at(component[i]), tm);
+      auto h = h0;
+      do
+      {
+        const std::size_t g = idx.face_id(opposite(h, tm));
+        if(g != idx.npos && !is_crease[idx.edge_id(h)] && state[g] != 2)
+        {
+          if(joins(g))
+          {
+            state[g] = 2;
+            component.push_back(g);
+          }
+          else
+            beside(g);
+        }
+        h = next(h, tm);
+      } while(h != h0);
+    }
+  };
+  std::vector<double> magnitude, spacing;
+  for(std::size_t r = 0; r < nf; ++r)
+  {
+    const std::vector<std::size_t>& faces = members[r];
+    if(root[r] != r || faces.size() < Limits::least_faces) continue;
+    // the median distance between adjacent centroids, and a first median curvature from
+    // the faces sharing a vertex with each face
+    spacing.clear();
+    magnitude.clear();
+    for(std::size_t f : faces)
+    {
+      ball.clear();
+      for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
+        if(ring[i] != f && root[ring[i]] == r)
+        {
+          ball.push_back(ring[i]);
+          spacing.push_back((centroid[ring[i]] - centroid[f]).norm());
+        }
+      double a, b;
+      if(fitted_curvatures(f, ball, centroid, normal, a, b)) magnitude.push_back(std::abs(a));
+    }
+    if(magnitude.size() < faces.size() / 2 || spacing.empty()) continue;
+    auto median = [](std::vector<double>& v) {
+      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+      return v[v.size() / 2];
+    };
+    const double first = median(magnitude), step = median(spacing);
+    if(!(first > 0) || !(step > 0)) continue;
+    const double radius = (std::min)(Limits::support / first, Limits::most_spacings * step);
+    // the curvatures over the support
+    magnitude.clear();
+    for(std::size_t f : faces)
+    {
+      gather(f, radius);
+      fitted[f] = fitted_curvatures(f, ball, centroid, normal, k1[f], k2[f]) ? 1 : 0;
+      mean_point[f] = centroid[f];
+      mean_normal[f] = normal[f];
+      for(std::size_t j : ball)
+      {
+        mean_point[f] += centroid[j];
+        mean_normal[f] += normal[j];
+      }
+      mean_point[f] /= double(ball.size() + 1);
+      mean_normal[f] /= double(ball.size() + 1);
+      if(fitted[f]) magnitude.push_back(std::abs(k1[f]));
+    }
+    if(magnitude.size() < faces.size() / 2) continue;
+    std::sort(magnitude.begin(), magnitude.end());
+    const double lower = magnitude[magnitude.size() / 4], upper = magnitude[(3 * magnitude.size()) / 4];
+    const double blend = magnitude[magnitude.size() / 2];
+    if(!(lower > 0) || upper > Limits::quartile_ratio * lower) continue;
+    // a blend is mostly cylinders: most of its faces have a small k2
+    std::size_t cylindrical = 0;
+    for(std::size_t f : faces)
+      if(fitted[f] && std::abs(k2[f]) <= Limits::cylinder * std::abs(k1[f])) ++cylindrical;
+    if(2 * cylindrical < magnitude.size()) continue;
+    // the candidate corners: the components of the faces of sphere-like curvature
+    for(std::size_t f : faces)
+      state[f] = fitted[f] && k1[f] * k2[f] > 0 && std::abs(k2[f]) >= Limits::umbilic * std::abs(k1[f]) ? 1 : 0;
+    const double least_area = Limits::least_corner_area / (blend * blend);
+    for(std::size_t f : faces)
+    {
+      if(state[f] != 1) continue;
+      grow(f, [&](std::size_t g) { return state[g] == 1; }, [](std::size_t) {});
+      double extent = 0.;
+      for(std::size_t g : component) extent += area[g];
+      if(component.size() < Limits::least_corner_faces || extent < least_area) continue;
+      // a piece of one sphere: its centres of curvature gather round one point
+      auto centre = [&](std::size_t g) -> Eigen::Vector3d {
+        return mean_point[g] - mean_normal[g] * ((k1[g] > 0 ? 1. : -1.) / blend);
+      };
+      Eigen::Vector3d mc = Eigen::Vector3d::Zero(), mp = Eigen::Vector3d::Zero();
+      for(std::size_t g : component)
+      {
+        mc += centre(g);
+        mp += centroid[g];
+      }
+      mc /= double(component.size());
+      mp /= double(component.size());
+      double sc = 0., sp = 0.;
+      for(std::size_t g : component)
+      {
+        sc += (centre(g) - mc).squaredNorm();
+        sp += (centroid[g] - mp).squaredNorm();
+      }
+      if(sc > Limits::collapse * Limits::collapse * sp) continue;
+      ++corners;
+      for(std::size_t g : component) corner[g] = corners;
+    }
+    // the pieces of the rest smaller than a corner that touch one corner alone (holes
+    // that noise makes in a corner, slivers along its rim) join it
+    for(std::size_t f : faces) state[f] = 0;
+    std::vector<std::size_t> touching;
+    for(std::size_t f : faces)
+    {
+      if(corner[f] != 0 || state[f] != 0) continue;
+      touching.clear();
+      grow(f, [&](std::size_t g) { return corner[g] == 0; }, [&](std::size_t g) { touching.push_back(corner[g]); });
+      std::sort(touching.begin(), touching.end());
+      if(touching.empty() || touching.front() != touching.back()) continue;
+      double extent = 0.;
+      for(std::size_t g : component) extent += area[g];
+      if(extent < least_area)
+        for(std::size_t g : component) corner[g] = touching.front();
+    }
+  }
+  if(corners == 0) return 0;
+  std::size_t marked = 0;
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
+    if(is_crease[e] || f == idx.npos || g == idx.npos || root[f] != root[g] || corner[f] == corner[g]) continue;
+    is_crease[e] = 2;
+    ++marked;
+  }
+  return marked;
+}
+
+} // namespace internal
+} // namespace Feature_segmentation
+} // namespace CGAL
+
+#endif // CGAL_FEATURE_SEGMENTATION_INTERNAL_BLEND_CORNERS_H
