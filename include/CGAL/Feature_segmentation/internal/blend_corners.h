@@ -11,10 +11,12 @@
 // plane), so the support scales with the blend and not with the tessellation or the
 // diagonal: a coarse tessellation takes about one ring, a fine one more, which averages
 // a noisy mesh's normals. A region is a blend when the larger curvature is about
-// constant over it (the ratio of its quartiles); its faces whose smaller curvature
-// reaches half the larger (same sign) form candidate corners, and a candidate is a
-// corner when it is a piece of one sphere: its faces' centres of curvature (centroid
-// minus normal times R) gather round one point, where a strip of a cylinder or a torus
+// constant over it (the ratio of its quartiles) and most of it is cylinder-like, as a
+// sample of its faces says (one of them sphere-like); then all its faces are fitted,
+// those whose smaller curvature reaches half the larger (same sign) form candidate
+// corners, and a candidate is a corner when it is a piece of one sphere: its faces'
+// centres of curvature (centroid minus normal times R, averaged over each face's
+// support) gather round one point, where a strip of a cylinder or a torus
 // spreads them along its axis or spine as far as its centroids. The edges between a
 // corner and the rest of its region are marked as curvature discontinuities.
 
@@ -22,9 +24,7 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_BLEND_CORNERS_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
-#include <CGAL/Feature_segmentation/internal/face_components.h>
-
-#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Feature_segmentation/internal/union_find.h>
 
 #include <Eigen/Dense>
 
@@ -45,13 +45,17 @@ struct Blend_corners
 {
   // The least number of faces of a region that is looked at.
   static constexpr std::size_t least_faces = 100;
+  // The most faces of a region whose curvatures decide whether it is a blend with a
+  // corner (evenly spread over it; a corner among them); a blend's faces are all fitted
+  // then.
+  static constexpr std::size_t sample = 512;
   // The faces whose normals a face's curvature is fitted to: those of its region within
   // this fraction of the blend's radius (the inverse of the median larger curvature).
   static constexpr double support = 0.5;
   // ... and within this many times the median distance between adjacent centroids of
   // the region (a blend tessellated finely has its curvature in a few rings, and the
   // cost stays linear).
-  static constexpr double most_spacings = 4.;
+  static constexpr double most_spacings = 3.;
   // The largest ratio of the upper to the lower quartile of the larger curvature's
   // magnitude in a blend: 1.03 to 1.3 on the generated rounded boxes clean and at 0.3%
   // noise, about 3 on a noisy plane.
@@ -120,19 +124,24 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
                                std::vector<char>& is_crease)
 {
   typedef Blend_corners Limits;
-  const TriangleMesh& tm = idx.mesh();
-  const std::size_t nf = idx.number_of_faces(), ne = idx.number_of_edges();
-  if(ne == 0 || nf == 0) return 0;
-  std::vector<std::size_t> edge_faces(2 * ne, idx.npos);
-  for(std::size_t e = 0; e < ne; ++e)
+  const std::size_t nf = idx.number_of_faces();
+  if(nf == 0) return 0;
+  // the faces across each face's edges, the regions that the marked edges bound (by
+  // their smallest face), and their faces
+  const std::uint32_t none = std::uint32_t(-1);
+  std::vector<std::uint32_t> face_edge, across;
+  face_edges_and_neighbours(idx, none, face_edge, across);
+  Smallest_root_union_find sets(nf);
+  for(std::size_t k = 0; k < across.size(); ++k)
+    if(across[k] != none && !is_crease[face_edge[k]]) sets.unite(k / 3, across[k]);
+  const std::vector<std::size_t> root = sets.roots();
+  std::vector<std::size_t> first_member(nf + 1, 0), member(nf);
+  for(std::size_t f = 0; f < nf; ++f) ++first_member[root[f] + 1];
+  for(std::size_t f = 0; f < nf; ++f) first_member[f + 1] += first_member[f];
   {
-    const auto h = halfedge(idx.edge_at(e), tm);
-    edge_faces[2 * e] = idx.face_id(h);
-    edge_faces[2 * e + 1] = idx.face_id(opposite(h, tm));
+    std::vector<std::size_t> fill(first_member.begin(), first_member.end() - 1);
+    for(std::size_t f = 0; f < nf; ++f) member[fill[root[f]]++] = f;
   }
-  const std::vector<std::size_t> root = face_components(idx, [&](std::size_t e) { return !is_crease[e]; });
-  std::vector<std::vector<std::size_t> > members(nf);
-  for(std::size_t f = 0; f < nf; ++f) members[root[f]].push_back(f);
 
   std::vector<double> k1(nf, 0.), k2(nf, 0.);
   std::vector<char> fitted(nf, 0);
@@ -141,7 +150,7 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
   // cylinder's axis
   std::vector<Eigen::Vector3d> mean_point(nf), mean_normal(nf);
   std::vector<std::size_t> stamp(nf, std::size_t(-1)), ball, front, following;
-  // the faces of f's region within `radius` of its centroid, reached through shared vertices
+  // the faces of f's region within `radius` of its centroid, reached across edges
   auto gather = [&](std::size_t f, double radius) {
     ball.clear();
     front.assign(1, f);
@@ -151,10 +160,10 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
     {
       following.clear();
       for(std::size_t g : front)
-        for(std::size_t i = begin[g]; i < begin[g + 1]; ++i)
+        for(std::size_t k = 3 * g; k < 3 * g + 3; ++k)
         {
-          const std::size_t j = ring[i];
-          if(stamp[j] == f || root[j] != root[f]) continue;
+          const std::size_t j = across[k];
+          if(j == none || stamp[j] == f || root[j] != root[f]) continue;
           stamp[j] = f;
           if((centroid[j] - centroid[f]).squaredNorm() > r2) continue;
           ball.push_back(j);
@@ -175,36 +184,53 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
     component.assign(1, f);
     state[f] = 2;
     for(std::size_t i = 0; i < component.size(); ++i)
-    {
-      const auto h0 = halfedge(idx.face_at(component[i]), tm);
-      auto h = h0;
-      do
+      for(std::size_t k = 3 * component[i]; k < 3 * component[i] + 3; ++k)
       {
-        const std::size_t g = idx.face_id(opposite(h, tm));
-        if(g != idx.npos && !is_crease[idx.edge_id(h)] && state[g] != 2)
+        const std::size_t g = across[k];
+        if(g == none || is_crease[face_edge[k]] || state[g] == 2) continue;
+        if(joins(g))
         {
-          if(joins(g))
-          {
-            state[g] = 2;
-            component.push_back(g);
-          }
-          else
-            beside(g);
+          state[g] = 2;
+          component.push_back(g);
         }
-        h = next(h, tm);
-      } while(h != h0);
+        else
+          beside(g);
+      }
+  };
+  // the fit of face f over the faces of its region within `radius`, with its support's
+  // mean centroid and normal
+  auto fit = [&](std::size_t f, double radius) {
+    gather(f, radius);
+    fitted[f] = fitted_curvatures(f, ball, centroid, normal, k1[f], k2[f]) ? 1 : 0;
+    mean_point[f] = centroid[f];
+    mean_normal[f] = normal[f];
+    for(std::size_t j : ball)
+    {
+      mean_point[f] += centroid[j];
+      mean_normal[f] += normal[j];
     }
+    mean_point[f] /= double(ball.size() + 1);
+    mean_normal[f] /= double(ball.size() + 1);
+  };
+  auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
   };
   std::vector<double> magnitude, spacing;
+  std::vector<std::size_t> sample;
   for(std::size_t r = 0; r < nf; ++r)
   {
-    const std::vector<std::size_t>& faces = members[r];
-    if(root[r] != r || faces.size() < Limits::least_faces) continue;
+    if(root[r] != r || first_member[r + 1] - first_member[r] < Limits::least_faces) continue;
+    const std::vector<std::size_t> faces(member.begin() + first_member[r], member.begin() + first_member[r + 1]);
+    // the tests read a sample of the region's faces, evenly spread over their order
+    sample.clear();
+    const std::size_t stride = (faces.size() + Limits::sample - 1) / Limits::sample;
+    for(std::size_t i = 0; i < faces.size(); i += stride) sample.push_back(faces[i]);
     // the median distance between adjacent centroids, and a first median curvature from
     // the faces sharing a vertex with each face
     spacing.clear();
     magnitude.clear();
-    for(std::size_t f : faces)
+    for(std::size_t f : sample)
     {
       ball.clear();
       for(std::size_t i = begin[f]; i < begin[f + 1]; ++i)
@@ -216,41 +242,30 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
       double a, b;
       if(fitted_curvatures(f, ball, centroid, normal, a, b)) magnitude.push_back(std::abs(a));
     }
-    if(magnitude.size() < faces.size() / 2 || spacing.empty()) continue;
-    auto median = [](std::vector<double>& v) {
-      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-      return v[v.size() / 2];
-    };
+    if(2 * magnitude.size() < sample.size() || spacing.empty()) continue;
     const double first = median(magnitude), step = median(spacing);
     if(!(first > 0) || !(step > 0)) continue;
     const double radius = (std::min)(Limits::support / first, Limits::most_spacings * step);
-    // the curvatures over the support
+    // the curvatures over the support, on the sample
     magnitude.clear();
-    for(std::size_t f : faces)
+    std::size_t cylindrical = 0, spherical = 0;
+    for(std::size_t f : sample)
     {
-      gather(f, radius);
-      fitted[f] = fitted_curvatures(f, ball, centroid, normal, k1[f], k2[f]) ? 1 : 0;
-      mean_point[f] = centroid[f];
-      mean_normal[f] = normal[f];
-      for(std::size_t j : ball)
-      {
-        mean_point[f] += centroid[j];
-        mean_normal[f] += normal[j];
-      }
-      mean_point[f] /= double(ball.size() + 1);
-      mean_normal[f] /= double(ball.size() + 1);
-      if(fitted[f]) magnitude.push_back(std::abs(k1[f]));
+      fit(f, radius);
+      if(!fitted[f]) continue;
+      magnitude.push_back(std::abs(k1[f]));
+      if(std::abs(k2[f]) <= Limits::cylinder * std::abs(k1[f])) ++cylindrical;
+      if(k1[f] * k2[f] > 0 && std::abs(k2[f]) >= Limits::umbilic * std::abs(k1[f])) ++spherical;
     }
-    if(magnitude.size() < faces.size() / 2) continue;
+    if(2 * magnitude.size() < sample.size() || spherical == 0) continue;
     std::sort(magnitude.begin(), magnitude.end());
     const double lower = magnitude[magnitude.size() / 4], upper = magnitude[(3 * magnitude.size()) / 4];
     const double blend = magnitude[magnitude.size() / 2];
     if(!(lower > 0) || upper > Limits::quartile_ratio * lower) continue;
     // a blend is mostly cylinders: most of its faces have a small k2
-    std::size_t cylindrical = 0;
-    for(std::size_t f : faces)
-      if(fitted[f] && std::abs(k2[f]) <= Limits::cylinder * std::abs(k1[f])) ++cylindrical;
     if(2 * cylindrical < magnitude.size()) continue;
+    // a blend: the curvatures of all its faces
+    for(std::size_t f : faces) fit(f, radius);
     // the candidate corners: the components of the faces of sphere-like curvature
     for(std::size_t f : faces)
       state[f] = fitted[f] && k1[f] * k2[f] > 0 && std::abs(k2[f]) >= Limits::umbilic * std::abs(k1[f]) ? 1 : 0;
@@ -303,11 +318,11 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
   }
   if(corners == 0) return 0;
   std::size_t marked = 0;
-  for(std::size_t e = 0; e < ne; ++e)
+  for(std::size_t k = 0; k < across.size(); ++k)
   {
-    const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
-    if(is_crease[e] || f == idx.npos || g == idx.npos || root[f] != root[g] || corner[f] == corner[g]) continue;
-    is_crease[e] = 2;
+    const std::size_t f = k / 3, g = across[k];
+    if(g == none || g < f || is_crease[face_edge[k]] || root[f] != root[g] || corner[f] == corner[g]) continue;
+    is_crease[face_edge[k]] = 2;
     ++marked;
   }
   return marked;
