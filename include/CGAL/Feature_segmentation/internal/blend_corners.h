@@ -24,9 +24,12 @@
 #define CGAL_FEATURE_SEGMENTATION_INTERNAL_BLEND_CORNERS_H
 
 #include <CGAL/Feature_segmentation/internal/Mesh_indexing.h>
+#include <CGAL/Feature_segmentation/internal/crease_staircase.h>
 #include <CGAL/Feature_segmentation/internal/union_find.h>
 
 #include <Eigen/Dense>
+
+#include <boost/range/iterator_range.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -212,20 +215,18 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
     mean_point[f] /= double(ball.size() + 1);
     mean_normal[f] /= double(ball.size() + 1);
   };
-  auto median = [](std::vector<double>& v) {
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-  };
   std::vector<double> magnitude, spacing;
   std::vector<std::size_t> sample;
   for(std::size_t r = 0; r < nf; ++r)
   {
     if(root[r] != r || first_member[r + 1] - first_member[r] < Limits::least_faces) continue;
-    const std::vector<std::size_t> faces(member.begin() + first_member[r], member.begin() + first_member[r + 1]);
+    const auto faces = boost::make_iterator_range(member.cbegin() + std::ptrdiff_t(first_member[r]),
+                                                  member.cbegin() + std::ptrdiff_t(first_member[r + 1]));
     // the tests read a sample of the region's faces, evenly spread over their order
     sample.clear();
-    const std::size_t stride = (faces.size() + Limits::sample - 1) / Limits::sample;
-    for(std::size_t i = 0; i < faces.size(); i += stride) sample.push_back(faces[i]);
+    const std::size_t size = first_member[r + 1] - first_member[r];
+    const std::size_t stride = (size + Limits::sample - 1) / Limits::sample;
+    for(std::size_t i = 0; i < size; i += stride) sample.push_back(member[first_member[r] + i]);
     // the median distance between adjacent centroids, and a first median curvature from
     // the faces sharing a vertex with each face
     spacing.clear();
@@ -243,7 +244,7 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
       if(fitted_curvatures(f, ball, centroid, normal, a, b)) magnitude.push_back(std::abs(a));
     }
     if(2 * magnitude.size() < sample.size() || spacing.empty()) continue;
-    const double first = median(magnitude), step = median(spacing);
+    const double first = median_length(magnitude), step = median_length(spacing);
     if(!(first > 0) || !(step > 0)) continue;
     const double radius = (std::min)(Limits::support / first, Limits::most_spacings * step);
     // the curvatures over the support, on the sample
