@@ -134,28 +134,33 @@ def quality_generated():
 
 
 def quality_means(name="cad_parts.csv", nut_line=True):
-    """The mean F of every set and method at every noise level of `name`, and the hex nut."""
+    """The mean boundary F of every set and method at every noise level of `name`, the mean
+    Rand index likewise, and the hex nut."""
     rows = read_csv(name)
     sets = []
     for r in rows:
         if r["set"].startswith("mean ") and r["set"] not in sets:
             sets.append(r["set"])
     levels = sorted({number(r["noise"]) for r in rows if r["set"].startswith("mean ")})
-    body = []
-    for s in sets:
-        for level in levels:
-            cells = [s[len("mean "):], f"{100 * level:g}%" if level else "0"]
-            any_value = False
-            for method, _ in CAD_METHODS:
-                r = next((r for r in rows if r["set"] == s and number(r["noise"]) == level and r["method"] == method),
-                         None)
-                cells.append(fixed(r["f"]) if r else "")
-                any_value |= r is not None
-            if any_value:
-                body.append(cells)
+
+    def table(column):
+        body = []
+        for s in sets:
+            for level in levels:
+                cells = [s[len("mean "):], f"{100 * level:g}%" if level else "0"]
+                any_value = False
+                for method, _ in CAD_METHODS:
+                    r = next((r for r in rows
+                              if r["set"] == s and number(r["noise"]) == level and r["method"] == method), None)
+                    cells.append(fixed(r[column]) if r else "")
+                    any_value |= r is not None
+                if any_value:
+                    body.append(cells)
+        return markdown(["set", "noise (of the diagonal)"] + [m[1] for m in CAD_METHODS], body,
+                        ["---", "---:"] + ["---:"] * len(CAD_METHODS))
+
+    text = "Boundary F:\n\n" + table("f") + "\n\nRand index (faces weighted by area):\n\n" + table("rand_index")
     nut = [r for r in rows if r["set"] == "abc" and number(r["noise"]) == 0] if nut_line else []
-    text = markdown(["set", "noise (of the diagonal)"] + [m[1] for m in CAD_METHODS], body,
-                    ["---", "---:"] + ["---:"] * len(CAD_METHODS))
     if nut:
         names = dict(CAD_METHODS, sharp45="sharp edges 45", sharp60="sharp edges 60")
         cells = [f"{names.get(r['method'], r['method'])} {fixed(r['f'])} ({r['patches']})" for r in nut]

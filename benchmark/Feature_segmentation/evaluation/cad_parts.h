@@ -148,6 +148,10 @@ struct Cad_score
   std::size_t patches = 0;
   std::size_t small_patches = 0; ///< patches under 0.1% of the area (small_patch_share)
   FS::Boundary_scores boundary;
+  /// FS::rand_index() of the face labels against the true ones, faces weighted by area:
+  /// low where patches merge true ones, and hardly lowered by small patches (confetti),
+  /// which a boundary F near band_share can hide
+  double rand_index = 0;
   double seconds = 0;
   bool ran = true; ///< false: the method was not selected (Cad_options::methods)
 };
@@ -197,6 +201,9 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
     [&] { return run_vsa(mesh, true_patches); }};
   auto truth =
     boost::make_function_property_map<face_descriptor>([&labels](face_descriptor f) { return labels[f.idx()]; });
+  std::vector<double> area;
+  area.reserve(mesh.number_of_faces());
+  for(auto f : faces(mesh)) area.push_back(PMP::face_area(f, mesh));
   std::vector<Cad_score> scores;
   for(std::size_t k = 0; k < cad_methods().size(); ++k)
   {
@@ -213,6 +220,7 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
     r.patches = number_of_distinct(s.face_patch);
     r.small_patches = number_of_small_patches(mesh, s.face_patch);
     r.boundary = FS::compare_boundaries(mesh, patches, truth, FS::default_boundary_tolerance(mesh));
+    r.rand_index = FS::rand_index(s.face_patch, labels, area);
     r.seconds = s.seconds;
     scores.push_back(r);
   }
@@ -220,7 +228,7 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
 }
 
 /// The means of the scores of one or more runs of the same methods (noise realisations):
-/// boundary scores and seconds averaged, patch counts averaged and rounded (one run: its
+/// boundary scores, Rand indices and seconds averaged, patch counts averaged and rounded (one run: its
 /// own scores).
 inline std::vector<Cad_score> mean_scores(const std::vector<std::vector<Cad_score> >& runs)
 {
@@ -229,7 +237,7 @@ inline std::vector<Cad_score> mean_scores(const std::vector<std::vector<Cad_scor
   for(std::size_t k = 0; k < mean.size(); ++k)
   {
     if(!mean[k].ran) continue;
-    double patches = 0, small = 0;
+    double patches = 0, small = 0, rand = 0;
     FS::Boundary_scores b;
     b.precision = b.recall = b.f_score = 0.;
     double seconds = 0;
@@ -238,6 +246,7 @@ inline std::vector<Cad_score> mean_scores(const std::vector<std::vector<Cad_scor
       const Cad_score& s = run[k];
       patches += double(s.patches);
       small += double(s.small_patches);
+      rand += s.rand_index / n;
       b.precision += s.boundary.precision / n;
       b.recall += s.boundary.recall / n;
       b.f_score += s.boundary.f_score / n;
@@ -248,6 +257,7 @@ inline std::vector<Cad_score> mean_scores(const std::vector<std::vector<Cad_scor
     mean[k].patches = std::size_t(std::lround(patches / n));
     mean[k].small_patches = std::size_t(std::lround(small / n));
     mean[k].boundary = b;
+    mean[k].rand_index = rand;
     mean[k].seconds = seconds;
   }
   return mean;

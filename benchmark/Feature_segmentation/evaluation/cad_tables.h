@@ -44,10 +44,12 @@ inline const std::vector<std::pair<std::string, std::vector<std::string> > >& ca
   return groups;
 }
 
-/// The mean boundary F of each method at noise level `l` over the parts of `sets`, and
-/// the number of those parts.
-inline std::pair<std::vector<double>, std::size_t> mean_f(const std::vector<Cad_result>& results,
-                                                          const std::vector<std::string>& sets, std::size_t l)
+/// The mean of `value` (of a Cad_score) of each method at noise level `l` over the parts
+/// of `sets`, and the number of those parts.
+template <typename Value>
+std::pair<std::vector<double>, std::size_t> mean_over_parts(const std::vector<Cad_result>& results,
+                                                            const std::vector<std::string>& sets, std::size_t l,
+                                                            Value value)
 {
   std::vector<double> mean(cad_methods().size(), 0.);
   std::size_t parts = 0;
@@ -55,10 +57,26 @@ inline std::pair<std::vector<double>, std::size_t> mean_f(const std::vector<Cad_
     if(std::find(sets.begin(), sets.end(), r.set) != sets.end())
     {
       ++parts;
-      for(std::size_t k = 0; k < mean.size(); ++k) mean[k] += r.scores[l][k].boundary.f_score;
+      for(std::size_t k = 0; k < mean.size(); ++k) mean[k] += value(r.scores[l][k]);
     }
   for(double& x : mean) x = parts > 0 ? x / double(parts) : 0.;
   return {mean, parts};
+}
+
+/// The mean boundary F of each method at noise level `l` over the parts of `sets`, and
+/// the number of those parts.
+inline std::pair<std::vector<double>, std::size_t> mean_f(const std::vector<Cad_result>& results,
+                                                          const std::vector<std::string>& sets, std::size_t l)
+{
+  return mean_over_parts(results, sets, l, [](const Cad_score& s) { return s.boundary.f_score; });
+}
+
+/// The mean area-weighted Rand index (Cad_score::rand_index) of each method at noise
+/// level `l` over the parts of `sets`.
+inline std::vector<double> mean_rand_index(const std::vector<Cad_result>& results,
+                                           const std::vector<std::string>& sets, std::size_t l)
+{
+  return mean_over_parts(results, sets, l, [](const Cad_score& s) { return s.rand_index; }).first;
 }
 
 /// Writes OUT/cad_parts.md and OUT/cad_parts.csv, and prints the markdown.
@@ -70,7 +88,7 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
 
   Text_table csv;
   csv.header = {"set", "part", "faces", "true_patches", "tangent_share", "band_share", "noise", "method",
-                "patches", "small_patches", "precision", "recall", "f", "seconds"};
+                "patches", "small_patches", "precision", "recall", "f", "rand_index", "seconds"};
   for(const Cad_result& r : results)
     for(std::size_t l = 0; l < levels; ++l)
       for(std::size_t k = 0; k < methods.size(); ++k)
@@ -80,17 +98,19 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
         csv.rows.push_back({r.set, r.name, std::to_string(r.faces), std::to_string(r.true_patches),
                             fmt(r.tangent_share, 6), fmt(r.band_share, 6), plain(options.noise[l]), methods[k].first,
                             std::to_string(s.patches), std::to_string(s.small_patches), fmt(s.boundary.precision, 6),
-                            fmt(s.boundary.recall, 6), fmt(s.boundary.f_score, 6), fmt(s.seconds, 3)});
+                            fmt(s.boundary.recall, 6), fmt(s.boundary.f_score, 6), fmt(s.rand_index, 6),
+                            fmt(s.seconds, 3)});
       }
   for(const auto& group : cad_groups())
     for(std::size_t l = 0; l < levels; ++l)
     {
       const auto m = mean_f(results, group.second, l);
       if(m.second == 0) continue;
+      const std::vector<double> rand = mean_rand_index(results, group.second, l);
       for(std::size_t k = 0; k < methods.size(); ++k)
         if(options.runs(k))
           csv.rows.push_back({"mean " + group.first, "", "", "", "", "", plain(options.noise[l]), methods[k].first, "", "",
-                            "", "", fmt(m.first[k], 6), ""});
+                            "", "", fmt(m.first[k], 6), fmt(rand[k], 6), ""});
     }
   std::ofstream csv_file(std::filesystem::path(out) / "cad_parts.csv");
   csv.write_csv(csv_file);
@@ -99,7 +119,8 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
   md << "# CAD parts\n\nMachine: " << machine << ". Produced by `evaluate_quality` (evaluation/cad_tables.h). "
      << "Boundary F-score at 1% of the bounding-box diagonal against the true patches (the B-rep faces; the ABC "
         "surfaces), on the face patches, the patch count in parentheses and, after a slash, the number of patches "
-        "under 0.1% of the area. Sets: \"cad\", Fusion 360 parts meshed by gmsh; \"abc-dev\", native ABC meshes "
+        "under 0.1% of the area; the means also give the Rand index of the face patches against the true ones, faces "
+        "weighted by area (low where patches merge true ones). Sets: \"cad\", Fusion 360 parts meshed by gmsh; \"abc-dev\", native ABC meshes "
         "(read by the program's reader, which separates the faces of non-manifold edges); \"abc\", the ABC models "
         "with a YAML ground truth, outside the means. \"this package (defaults)\": segment_along_features() with "
      << settings_text(options)
@@ -125,14 +146,23 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
     means.header = {"noise (of the diagonal)"};
     for(std::size_t k = 0; k < methods.size(); ++k)
       if(options.runs(k)) means.header.push_back(methods[k].second);
+    Text_table rand = means;
     for(std::size_t l = 0; l < levels; ++l)
     {
       means.rows.push_back({plain(100 * options.noise[l]) + "%"});
+      rand.rows.push_back(means.rows.back());
       const std::vector<double> f = mean_f(results, group.second, l).first;
+      const std::vector<double> ri = mean_rand_index(results, group.second, l);
       for(std::size_t k = 0; k < methods.size(); ++k)
-        if(options.runs(k)) means.rows.back().push_back(fmt(f[k]));
+        if(options.runs(k))
+        {
+          means.rows.back().push_back(fmt(f[k]));
+          rand.rows.back().push_back(fmt(ri[k]));
+        }
     }
     means.write_markdown(md);
+    md << "\nMean Rand index (faces weighted by area):\n\n";
+    rand.write_markdown(md);
   }
   for(std::size_t l = 0; l < levels; ++l)
   {

@@ -6,6 +6,7 @@
 #include <CGAL/Feature_segmentation/smooth_boundaries.h>
 
 #include "abc_ground_truth.h"
+#include "cad_parts.h"
 #include "resolution_series.h"
 #include "methods.h"
 #include "metrics.h"
@@ -213,10 +214,12 @@ BOOST_AUTO_TEST_CASE(boundary_band_share_on_a_grid)
 BOOST_AUTO_TEST_CASE(mean_scores_of_noise_realisations)
 {
   // Two realisations of two methods, the second not run: F 0.5 and 1 average to 0.75,
-  // 3 and 4 patches to 3.5, rounded away from zero to 4; one realisation is itself.
+  // Rand indices 0.25 and 0.5 to 0.375, 3 and 4 patches to 3.5, rounded away from zero to
+  // 4; one realisation is itself.
   auto score = [](double f, std::size_t patches, std::size_t small) {
     fs_evaluation::Cad_score s;
     s.boundary.precision = s.boundary.recall = s.boundary.f_score = f;
+    s.rand_index = f / 2;
     s.patches = patches;
     s.small_patches = small;
     s.seconds = f;
@@ -229,13 +232,43 @@ BOOST_AUTO_TEST_CASE(mean_scores_of_noise_realisations)
   BOOST_REQUIRE_EQUAL(mean.size(), 2u);
   BOOST_CHECK_CLOSE(mean[0].boundary.f_score, 0.75, 1e-12);
   BOOST_CHECK_CLOSE(mean[0].boundary.precision, 0.75, 1e-12);
+  BOOST_CHECK_CLOSE(mean[0].rand_index, 0.375, 1e-12);
   BOOST_CHECK_CLOSE(mean[0].seconds, 0.75, 1e-12);
   BOOST_CHECK_EQUAL(mean[0].patches, 4u);
   BOOST_CHECK_EQUAL(mean[0].small_patches, 1u);
   BOOST_CHECK(!mean[1].ran);
   const std::vector<fs_evaluation::Cad_score> one = fs_evaluation::mean_scores({runs.front()});
   BOOST_CHECK_EQUAL(one[0].boundary.f_score, 0.5);
+  BOOST_CHECK_EQUAL(one[0].rand_index, 0.25);
   BOOST_CHECK_EQUAL(one[0].patches, 3u);
+}
+
+BOOST_AUTO_TEST_CASE(cad_table_scores_of_a_cube)
+{
+  // The unit cube, each side 8 triangles of equal area; sharp edges at 45 degrees find its
+  // 6 sides. Against the sides: F 1 and Rand index 1. Against a truth that merges two
+  // sides: of the 48 * 47 / 2 = 1128 pairs of triangles (equal weights), the 8 * 8 = 64
+  // across the two merged sides disagree, Rand index 1064 / 1128.
+  std::vector<int> side;
+  const Mesh m = fs_test::to_mesh<Mesh>(fs_test::box(1., 1., 1., 2, side));
+  BOOST_REQUIRE_EQUAL(m.number_of_faces(), 48u);
+  FE::Cad_options options;
+  options.methods = {"sharp45"};
+  const std::vector<FE::Cad_score> exact = FE::run_cad_methods(m, side, 6, options);
+  BOOST_REQUIRE_EQUAL(exact.size(), FE::cad_methods().size());
+  BOOST_CHECK(!exact[0].ran);
+  const FE::Cad_score& s = exact[3];
+  BOOST_REQUIRE(s.ran);
+  BOOST_CHECK_EQUAL(s.patches, 6u);
+  BOOST_CHECK_EQUAL(s.small_patches, 0u);
+  BOOST_CHECK_CLOSE(s.boundary.f_score, 1., 1e-9);
+  BOOST_CHECK_CLOSE(s.rand_index, 1., 1e-9);
+  std::vector<int> merged = side;
+  for(int& l : merged) l = l == 2 ? 0 : l;
+  const std::vector<FE::Cad_score> coarse = FE::run_cad_methods(m, merged, 5, options);
+  BOOST_CHECK_EQUAL(coarse[3].patches, 6u);
+  BOOST_CHECK_CLOSE(coarse[3].rand_index, 1064. / 1128., 1e-9);
+  BOOST_CHECK_LT(coarse[3].boundary.precision, 1.);
 }
 
 BOOST_AUTO_TEST_CASE(boundary_precision_recall_on_a_grid)
