@@ -149,8 +149,7 @@ struct Cad_score
   std::size_t small_patches = 0; ///< patches under 0.1% of the area (small_patch_share)
   FS::Boundary_scores boundary;
   /// FS::rand_index() of the face labels against the true ones, faces weighted by area:
-  /// low where patches merge true ones, and hardly lowered by small patches (confetti),
-  /// which a boundary F near band_share can hide
+  /// low where patches merge true ones; small patches (confetti) hardly lower it
   double rand_index = 0;
   double seconds = 0;
   bool ran = true; ///< false: the method was not selected (Cad_options::methods)
@@ -228,8 +227,8 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
 }
 
 /// The means of the scores of one or more runs of the same methods (noise realisations):
-/// boundary scores, Rand indices and seconds averaged, patch counts averaged and rounded (one run: its
-/// own scores).
+/// boundary scores, Rand indices and seconds averaged, patch counts averaged and rounded
+/// (one run: its own scores).
 inline std::vector<Cad_score> mean_scores(const std::vector<std::vector<Cad_score> >& runs)
 {
   std::vector<Cad_score> mean = runs.front();

@@ -120,7 +120,8 @@ inline void write_cad_tables(const std::string& out, const Cad_options& options,
      << "Boundary F-score at 1% of the bounding-box diagonal against the true patches (the B-rep faces; the ABC "
         "surfaces), on the face patches, the patch count in parentheses and, after a slash, the number of patches "
         "under 0.1% of the area; the means also give the Rand index of the face patches against the true ones, faces "
-        "weighted by area (low where patches merge true ones). Sets: \"cad\", Fusion 360 parts meshed by gmsh; \"abc-dev\", native ABC meshes "
+        "weighted by area (low where patches merge true ones). Sets: \"cad\", Fusion 360 parts meshed by gmsh; "
+        "\"abc-dev\", native ABC meshes "
         "(read by the program's reader, which separates the faces of non-manifold edges); \"abc\", the ABC models "
         "with a YAML ground truth, outside the means. \"this package (defaults)\": segment_along_features() with "
      << settings_text(options)
