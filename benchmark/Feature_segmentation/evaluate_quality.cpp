@@ -34,7 +34,7 @@
 //
 // The CAD table (evaluation/cad_tables.h): the parts of DATA/cad and DATA/abc-dev (the
 // development set) against their B-rep faces, and the ABC models of DATA/abc after them,
-// by the boundary F-score: this package at its
+// by the boundary F-score and the Rand index: this package at its
 // defaults, the paper's pipeline, sharp edges at 20/45/60 degrees and VSA with the true
 // patch count, at the noise levels of --noise; OUT/cad_parts.md and OUT/cad_parts.csv.
 //

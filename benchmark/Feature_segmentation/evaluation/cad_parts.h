@@ -4,7 +4,8 @@
 // The CAD table. The parts of DATA/cad (NAME.obj, a closed triangle mesh meshed from a
 // B-rep, and NAME.labels, the B-rep face of every triangle, in the OBJ's face order),
 // scored by the boundary F-score at 1% of the bounding-box diagonal (compare_boundaries()
-// of metrics.h, on the face patches, against the B-rep faces) for:
+// of metrics.h, on the face patches, against the B-rep faces) and by the Rand index of
+// the face patches (rand_index(), faces weighted by area) for:
 // - this package at its defaults: creases at 20 degrees, normals filtered before the
 //   creases are found (none on a clean mesh), curvature discontinuities, alpha 0.6 (the
 //   command line may change alpha, the strength threshold, the filter, the
