@@ -159,20 +159,20 @@ struct Cad_score
 /// The area share under which a patch counts as small in the tables (confetti).
 constexpr double small_patch_share = 0.001;
 
-/// The number of patches of `face_patch` whose area is below `share` of the whole area.
-inline std::size_t number_of_small_patches(const Mesh& mesh, const std::vector<std::size_t>& face_patch,
+/// The number of patches of `face_patch` whose area (the sum of `area`, one per face) is
+/// below `share` of the whole area.
+inline std::size_t number_of_small_patches(const std::vector<double>& area, const std::vector<std::size_t>& face_patch,
                                            double share = small_patch_share)
 {
-  std::map<std::size_t, double> area;
+  std::map<std::size_t, double> patch_area;
   double total = 0;
-  for(auto f : faces(mesh))
+  for(std::size_t f = 0; f < face_patch.size(); ++f)
   {
-    const double a = PMP::face_area(f, mesh);
-    area[face_patch[f.idx()]] += a;
-    total += a;
+    patch_area[face_patch[f]] += area[f];
+    total += area[f];
   }
   std::size_t n = 0;
-  for(const auto& pa : area) n += pa.second < share * total ? 1 : 0;
+  for(const auto& pa : patch_area) n += pa.second < share * total ? 1 : 0;
   return n;
 }
 
@@ -218,7 +218,7 @@ inline std::vector<Cad_score> run_cad_methods(const Mesh& mesh, const std::vecto
       [&s](face_descriptor f) { return s.face_patch[f.idx()]; });
     Cad_score r;
     r.patches = number_of_distinct(s.face_patch);
-    r.small_patches = number_of_small_patches(mesh, s.face_patch);
+    r.small_patches = number_of_small_patches(area, s.face_patch);
     r.boundary = FS::compare_boundaries(mesh, patches, truth, FS::default_boundary_tolerance(mesh));
     r.rand_index = FS::rand_index(s.face_patch, labels, area);
     r.seconds = s.seconds;

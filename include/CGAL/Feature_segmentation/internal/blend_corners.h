@@ -322,7 +322,8 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
   for(std::size_t k = 0; k < across.size(); ++k)
   {
     const std::size_t f = k / 3, g = across[k];
-    if(g == none || g < f || is_crease[face_edge[k]] || root[f] != root[g] || corner[f] == corner[g]) continue;
+    // (the two faces of a non-crease edge are in one region)
+    if(g == none || g < f || is_crease[face_edge[k]] || corner[f] == corner[g]) continue;
     is_crease[face_edge[k]] = 2;
     ++marked;
   }
