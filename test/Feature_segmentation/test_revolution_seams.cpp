@@ -6,7 +6,8 @@
 // surface of revolution) and a noisy plane get none; a bent pipe, exact and noisy, is cut
 // at its two tangent joints into its straight pieces and arc, on the same edges; a
 // weak crease inside a noisy cylinder is unmarked, a strong one or one on an elliptic
-// cylinder stays.
+// cylinder stays; a lightly noisy nail without planes gets the 15-degree seam between
+// its shank and its tip.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
@@ -493,7 +494,7 @@ BOOST_AUTO_TEST_CASE(lightly_noisy_hopper_gets_its_seams)
   // the wall and the spout by 33.7 degrees. Noise uniform in +-0.02 along the normals
   // (0.1% of the diagonal 16.6) makes it rough but not noisy, as a smooth model: its
   // filter blurs those bends. Its disk holds a fifth of its area or more, so it gets the
-  // plane borders and the revolution seams as a noisy mesh does.
+  // plane borders as a noisy mesh does, and the revolution seams as every rough mesh.
   const std::array<std::array<double, 2>, 5> corner{ { { 9., 0.5 }, { 9., 5. }, { 6., 5. }, { 0., 1. }, { -3., 1. } } };
   const std::array<int, 4> segment_rows{ 9, 6, 14, 6 };
   auto profile = [&](double j) {
@@ -545,6 +546,47 @@ BOOST_AUTO_TEST_CASE(lightly_noisy_hopper_gets_its_seams)
   std::size_t regions = 0;
   for(const auto& r : size) regions += r.second >= 64u;
   BOOST_TEST(regions == 4u);
+}
+
+
+BOOST_AUTO_TEST_CASE(lightly_noisy_nail_without_planes_gets_its_tip_seam)
+{
+  // A nail's shank and tip round the z axis, 64 facets round: a cylinder of radius 1
+  // from z = 0 to 8 (32 rows of 0.25) and a cone bending from it by 15 degrees, below the
+  // crease angle (20), down to radius 0.3 at z = 8 + 0.7 / tan(15 degrees) = 10.61 (10
+  // rows). Noise uniform in +-0.01 along the normals (0.09% of the diagonal 11.2) makes
+  // it rough but not noisy, as a smooth model, and it has no plane: the circle z = 8 is
+  // a seam round the axis (an edge per facet or more, within a row of it), nothing else
+  // is marked, and the shank and the tip are the two regions.
+  const double run = 0.7 / std::tan(15. * M_PI / 180.);
+  auto profile = [&](double j) {
+    if(j <= 32) return std::array<double, 2>{ 0.25 * j, 1. };
+    const double t = (std::min)(1., (j - 32) / 10.);
+    return std::array<double, 2>{ 8. + run * t, 1. - 0.7 * t };
+  };
+  const SM m = fs_test::to_mesh<SM>(noisy_revolution(64, 42, profile, 0.01));
+  const I::Mesh_indexing<SM> idx(m);
+  const double roughness = fs_test::face_geometry_of(idx).roughness;
+  BOOST_TEST_MESSAGE("roughness " << roughness);
+  BOOST_REQUIRE(roughness > I::crease_filter_roughness);
+  BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);
+  const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
+  std::size_t on_circle = 0, elsewhere = 0;
+  for(std::size_t e = 0; e < detected.is_crease.size(); ++e)
+  {
+    if(!detected.is_crease[e]) continue;
+    const auto h = halfedge(idx.edge_at(e), m);
+    const double z0 = m.point(source(h, m)).z(), z1 = m.point(target(h, m)).z();
+    if(std::abs(z0 - 8.) <= 0.3 && std::abs(z1 - 8.) <= 0.3) ++on_circle;
+    else ++elsewhere;
+  }
+  BOOST_TEST_MESSAGE("marked on the circle " << on_circle << ", elsewhere " << elsewhere);
+  BOOST_TEST(on_circle >= 64u);
+  BOOST_TEST(elsewhere == 0u);
+  const std::vector<std::size_t> root = I::face_components(idx, [&](std::size_t e) { return !detected.is_crease[e]; });
+  std::map<std::size_t, std::size_t> size;
+  for(std::size_t r : root) ++size[r];
+  BOOST_TEST(size.size() == 2u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
