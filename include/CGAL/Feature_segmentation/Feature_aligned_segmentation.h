@@ -137,9 +137,10 @@ public:
   ///   wider curved face without a crease angle) join the creases, and seam lines (where two curved
   ///   faces meet and the smaller principal curvature steps) join the crest lines; on a noisy mesh,
   ///   or a rough one whose planes hold a fifth of its area, the borders of its planes (where a
-  ///   plane meets a fillet or a curved face) join the creases, and on every rough mesh (noisy
-  ///   or smooth) so do the seams between the pieces of its surfaces of revolution (a cone
-  ///   running into a torus) and of its bent pipes (a cylinder running into a torus)}
+  ///   plane meets a fillet or a curved face) join the creases, and so do the seams between
+  ///   the pieces of its bent pipes (a cylinder running into a torus); on every rough mesh
+  ///   (noisy or smooth) so do the seams between the pieces of its surfaces of revolution (a
+  ///   cone running into a torus)}
   ///   \cgalParamType{`bool`}
   ///   \cgalParamDefault{`default_tangent_discontinuities` (`true`)} \cgalParamNEnd
   ///   \cgalParamNBegin{crest_lines_on_clean_tessellations} \cgalParamDescription{whether the crest

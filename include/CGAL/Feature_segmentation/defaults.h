@@ -40,9 +40,9 @@ constexpr int default_crease_filter_iterations = 40;
 /// curved face without a crease) join the creases, and seam lines (two curved faces
 /// meeting where the smaller principal curvature steps) join the crest lines; on a noisy
 /// mesh, or a rough one whose planes hold a fifth of its area, the borders of its planes
-/// join the creases, and on every rough mesh (noisy or smooth) so do the seams between
-/// the pieces (cylinders, cones, planes, tori, spheres) of its surfaces of revolution
-/// and between the straight pieces and arcs of its bent pipes.
+/// join the creases, and so do the seams between the straight pieces and arcs of its
+/// bent pipes; on every rough mesh (noisy or smooth) so do the seams between the pieces
+/// (cylinders, cones, planes, tori, spheres) of its surfaces of revolution.
 constexpr bool default_tangent_discontinuities = true;
 
 /// \ingroup PkgFeatureSegmentationSegmentation

@@ -238,9 +238,10 @@ constexpr double crease_rough_plane_share = 0.2;
 // Crease_gap::raw_roughness) and if `tangent`, the borders of its planes on the filtered
 // normals (mark_plane_borders), marked 2, and so on any other rough one whose planes
 // hold crease_rough_plane_share of its area or more; on every one that is filtered, and
-// if `tangent`, also the seams between the pieces of its surfaces of revolution and bent
-// pipes (mark_revolution_seams), marked 2; a piece of one or two faces (if not clean, of
-// up to crease_noisy_piece_max_faces) that these would cut out keeps its flattest edge
+// if `tangent`, also the seams between the pieces of its surfaces of revolution and, on
+// one that gets the plane borders, of its bent pipes (mark_revolution_seams), marked 2;
+// a piece of one or two faces (if not clean, of up to crease_noisy_piece_max_faces)
+// that these would cut out keeps its flattest edge
 // (join_isolated_crease_faces). `angle` receives the filtered angles (of a crease of a
 // heavily noisy mesh, the larger of the two filters'), `clean` whether the tessellation
 // is clean, `cad` whether its crest lines weigh less, as those of a CAD
@@ -345,14 +346,17 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   if(planes)
     plane_share = mark_plane_borders(idx, filtered_normal, normal, area, centroid, diagonal, is_crease,
                                      smooth ? crease_rough_plane_share : 0.);
-  // the surfaces of revolution and bent pipes of a filtered mesh, a smooth model as a
-  // noisy one (the nail ABC 00000655, whose shank bends into its tip by 7 degrees, is
-  // rough enough to be filtered), get the seams between their pieces, and its surfaces
-  // of revolution lose the creases inside their pieces. A clean tessellation has the
-  // seam lines; there the profiles' round-off and the facets of a flat subdivision
-  // would decide the pieces (an exact rod 40 radii long cut in two).
+  // the surfaces of revolution of a filtered mesh, a smooth model as a noisy one (the
+  // nail ABC 00000655, whose shank bends into its tip by 7 degrees, is rough enough to
+  // be filtered), get the seams between their pieces, and lose the creases inside their
+  // pieces; the bent pipes of a noisy mesh and of a smooth one whose planes hold
+  // crease_rough_plane_share of its area get theirs (the search for a pipe's radius
+  // would cost a smooth model such as the bunny 40% of its time). A clean tessellation
+  // has the seam lines; there the profiles' round-off and the facets of a flat
+  // subdivision would decide the pieces (an exact rod 40 radii long cut in two).
   if(tangent && filtered)
-    mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease, &angle);
+    mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease, &angle,
+                          !smooth || plane_share >= crease_rough_plane_share);
   // the corners of the rolling-ball blends that the marked edges bound, on a clean
   // tessellation, a noisy mesh and a rough one whose planes hold
   // crease_rough_plane_share of its area (as for the plane borders)

@@ -690,14 +690,15 @@ struct Seam_regions
 // surfaces of revolution that stronger creases bound (Revolution_seams::
 // clear_below_angle; the seams are those of the regions before). `normal`, `area`,
 // `centroid`: the faces' raw unit normals, areas and centroids; `begin`, `ring`: the
-// faces sharing a vertex with each face (vertex_adjacent_faces). Returns the number of
-// edges marked.
+// faces sharing a vertex with each face (vertex_adjacent_faces). Without `pipes`, a
+// region that is no surface of revolution is left alone. Returns the number of edges
+// marked.
 template <typename TriangleMesh, typename VPM>
 std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vpm,
                                   const std::vector<Eigen::Vector3d>& normal, const std::vector<double>& area,
                                   const std::vector<Eigen::Vector3d>& centroid, const std::vector<std::uint32_t>& begin,
                                   const std::vector<std::uint32_t>& ring, std::vector<char>& is_crease,
-                                  const std::vector<double>* angle = nullptr)
+                                  const std::vector<double>* angle = nullptr, bool pipes = true)
 {
   typedef Revolution_seams Limits;
   const TriangleMesh& tm = idx.mesh();
@@ -777,7 +778,7 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
       revolution_piece[members[f][i]] = p[i];
       revolution_distance[members[f][i]] = distance[i];
     }
-    if(p.empty())
+    if(p.empty() && pipes)
     {
       region_edges.clear();
       touched.clear();
