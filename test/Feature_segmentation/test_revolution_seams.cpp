@@ -486,6 +486,15 @@ BOOST_AUTO_TEST_CASE(weak_creases_inside_a_piece_are_cleared)
   BOOST_TEST(creases_left(fs_test::to_mesh<SM>(noisy_elliptic_cylinder()), 3., 30.) == 64u);
 }
 
+// Requires the mesh of `idx` to be rough but not noisy, as a smooth model is.
+void require_rough_but_not_noisy(const I::Mesh_indexing<SM>& idx)
+{
+  const double roughness = fs_test::face_geometry_of(idx).roughness;
+  BOOST_TEST_MESSAGE("roughness " << roughness);
+  BOOST_REQUIRE(roughness > I::crease_filter_roughness);
+  BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);
+}
+
 BOOST_AUTO_TEST_CASE(lightly_noisy_hopper_gets_its_seams)
 {
   // A hopper round the z axis, 64 facets round: a disk at z = 9 (radii 0.5 to 5, 9
@@ -513,10 +522,7 @@ BOOST_AUTO_TEST_CASE(lightly_noisy_hopper_gets_its_seams)
   };
   const SM m = fs_test::to_mesh<SM>(noisy_revolution(64, 35, profile, 0.02));
   const I::Mesh_indexing<SM> idx(m);
-  const double roughness = fs_test::face_geometry_of(idx).roughness;
-  BOOST_TEST_MESSAGE("roughness " << roughness);
-  BOOST_REQUIRE(roughness > I::crease_filter_roughness);
-  BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);
+  require_rough_but_not_noisy(idx);
 
   const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
   // both circles of the cone, z = 6 and z = 0, marked round the axis (an edge per facet
@@ -566,10 +572,7 @@ BOOST_AUTO_TEST_CASE(lightly_noisy_nail_without_planes_gets_its_tip_seam)
   };
   const SM m = fs_test::to_mesh<SM>(noisy_revolution(64, 42, profile, 0.01));
   const I::Mesh_indexing<SM> idx(m);
-  const double roughness = fs_test::face_geometry_of(idx).roughness;
-  BOOST_TEST_MESSAGE("roughness " << roughness);
-  BOOST_REQUIRE(roughness > I::crease_filter_roughness);
-  BOOST_REQUIRE(roughness <= I::Crease_gap::raw_roughness);
+  require_rough_but_not_noisy(idx);
   const fs_test::Detected_creases detected = fs_test::detect_creases_at_defaults(idx);
   std::size_t on_circle = 0, elsewhere = 0;
   for(std::size_t e = 0; e < detected.is_crease.size(); ++e)
