@@ -5,9 +5,11 @@
 // they meet and parts the two; a noisy cylinder alone, a noisy elliptic cylinder (no
 // surface of revolution) and a noisy plane get none; a bent pipe, exact and noisy, is cut
 // at its two tangent joints into its straight pieces and arc, on the same edges; a
-// weak crease inside a noisy cylinder is unmarked, a strong one or one on an elliptic
-// cylinder stays; a lightly noisy nail without planes gets the 15-degree seam between
-// its shank and its tip.
+// weak crease inside a noisy cylinder is unmarked, a strong one that bounds a region or
+// one on an elliptic cylinder stays; a strong crease that bounds nothing and the border
+// of an island of faces whose normals follow the cylinder's are unmarked, the borders
+// of its flat caps stay; a lightly noisy nail without planes gets the 15-degree seam
+// between its shank and its tip.
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Feature_segmentation/internal/crease_detection.h>
@@ -484,6 +486,70 @@ BOOST_AUTO_TEST_CASE(weak_creases_inside_a_piece_are_cleared)
   // on a noisy elliptic cylinder (z from 0 to 6), no surface of revolution, the weak
   // ring stays
   BOOST_TEST(creases_left(fs_test::to_mesh<SM>(noisy_elliptic_cylinder()), 3., 30.) == 64u);
+}
+
+BOOST_AUTO_TEST_CASE(strong_creases_and_islands_inside_a_piece_are_cleared)
+{
+  // A noisy cylinder (radius 1, z from -3 to 3, 30 rows of 0.2, 64 facets round), closed
+  // by two flat caps of 64 triangles each. Marked by hand: the caps' borders (90
+  // degrees), half a ring at z = 0 (70 degrees, the edges with x > 0) and the border of
+  // an island of 24 faces (70 degrees: 3 rows by 4 facets). The cylinder is one straight
+  // piece of its profile: the half ring bounds nothing and is noise inside it; the
+  // island's normals follow the cylinder's, so its border is noise too; the caps (small
+  // regions inside the piece too) are normal to the cylinder and stay.
+  fs_test::Soup s = fs_test::noisy_cylinder(1., 6., 64, 30, 0.05);
+  const std::size_t side_faces = s.faces.size(), bottom = s.points.size(), top = bottom + 1;
+  s.points.push_back({ 0., 0., -3. });
+  s.points.push_back({ 0., 0., 3. });
+  for(std::size_t i = 0; i < 64; ++i)
+  {
+    const std::size_t j = (i + 1) % 64;
+    s.faces.push_back({ bottom, j, i });
+    s.faces.push_back({ top, 30 * 64 + i, 30 * 64 + j });
+  }
+  const SM m = fs_test::to_mesh<SM>(s);
+  const I::Mesh_indexing<SM> idx(m);
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+  auto in_island = [&](std::size_t f) {
+    const auto& c = g.centroid[f];
+    const double a = std::atan2(c.y(), c.x());
+    return f < side_faces && c.z() > 1. && c.z() < 1.6 && a > 0. && a < 4 * 2 * M_PI / 64;
+  };
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  std::vector<int> kind(idx.number_of_edges(), 0); // 1 cap, 2 half ring, 3 island
+  std::size_t island_faces = 0;
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f) island_faces += in_island(f);
+  BOOST_TEST(island_faces == 24u);
+  std::array<std::size_t, 4> count{};
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), m);
+    const std::size_t f = idx.face_id(h), f2 = idx.face_id(opposite(h, m));
+    const auto& p = m.point(source(h, m));
+    const auto& q = m.point(target(h, m));
+    if((f >= side_faces) != (f2 >= side_faces))
+      kind[e] = 1;
+    else if(std::abs(p.z()) < 0.01 && std::abs(q.z()) < 0.01 && p.x() > 0 && q.x() > 0)
+      kind[e] = 2;
+    else if(in_island(f) != in_island(f2))
+      kind[e] = 3;
+    if(kind[e] == 0) continue;
+    is_crease[e] = 1;
+    angle[e] = kind[e] == 1 ? 90. : 70.;
+    ++count[kind[e]];
+  }
+  BOOST_TEST(count[1] == 128u);
+  BOOST_TEST(count[2] >= 28u);
+  BOOST_TEST(count[3] >= 14u);
+  const std::size_t marked = I::mark_revolution_seams(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
+                                                      g.begin, g.ring, is_crease, &angle);
+  BOOST_TEST(marked == 0u); // one piece: no seam
+  std::array<std::size_t, 4> left{};
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e) left[kind[e]] += is_crease[e] == 1;
+  BOOST_TEST(left[1] == 128u);
+  BOOST_TEST(left[2] == 0u);
+  BOOST_TEST(left[3] == 0u);
 }
 
 // Requires the mesh of `idx` to be rough but not noisy, as a smooth model is.

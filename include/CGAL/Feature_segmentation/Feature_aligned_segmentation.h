@@ -140,7 +140,7 @@ public:
   ///   plane meets a fillet or a curved face) join the creases, and so do the seams between
   ///   the pieces of its bent pipes (a cylinder running into a torus); on every rough mesh
   ///   (noisy or smooth) so do the seams between the pieces of its surfaces of revolution (a
-  ///   cone running into a torus)}
+  ///   cone running into a torus), and the creases that noise leaves inside one piece go}
   ///   \cgalParamType{`bool`}
   ///   \cgalParamDefault{`default_tangent_discontinuities` (`true`)} \cgalParamNEnd
   ///   \cgalParamNBegin{crest_lines_on_clean_tessellations} \cgalParamDescription{whether the crest

@@ -42,7 +42,8 @@ constexpr int default_crease_filter_iterations = 40;
 /// mesh, or a rough one whose planes hold a fifth of its area, the borders of its planes
 /// join the creases, and so do the seams between the straight pieces and arcs of its
 /// bent pipes; on every rough mesh (noisy or smooth) so do the seams between the pieces
-/// (cylinders, cones, planes, tori, spheres) of its surfaces of revolution.
+/// (cylinders, cones, planes, tori, spheres) of its surfaces of revolution, and the
+/// creases that noise leaves inside one piece go.
 constexpr bool default_tangent_discontinuities = true;
 
 /// \ingroup PkgFeatureSegmentationSegmentation
