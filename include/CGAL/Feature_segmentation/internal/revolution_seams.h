@@ -716,7 +716,7 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
   typedef Revolution_seams Limits;
   const std::size_t nf = regions.root.size(), ne = edge_faces.size() / 2;
   const std::size_t none = std::size_t(-1), mixed = std::size_t(-2);
-  auto small = [&](std::size_t f) { return regions.members[regions.root[f]].size() < Limits::least_faces; };
+  auto small = [&](std::size_t f) { return !regions.fitted(regions.root[f]); };
   auto inside = [&](std::size_t f) { return piece[f] != none && cut_distance[f] >= Limits::clear_margin; };
   // per small region (at its root): the region and piece of all its neighbours, or mixed
   std::vector<std::size_t> around(nf, none), around_piece(nf, none);
