@@ -478,11 +478,12 @@ BOOST_AUTO_TEST_CASE(weak_creases_inside_a_piece_are_cleared)
 {
   // A noisy cylinder (radius 1, 64 facets round) is one straight piece of its profile:
   // the ring, a crease of 30 degrees (below Revolution_seams::clear_below_angle), is
-  // noise inside it and is unmarked; one of 70 degrees bounds the region and stays.
+  // noise inside it and is unmarked; one of 70 degrees parts it into two regions, which
+  // are one straight piece together (join_coaxial_regions()), and is unmarked too.
   const SM cylinder = fs_test::to_mesh<SM>(fs_test::noisy_cylinder(1., 6., 64, 30, 0.05));
   // (z from -3 to 3)
   BOOST_TEST(creases_left(cylinder, 0., 30.) == 0u);
-  BOOST_TEST(creases_left(cylinder, 0., 70.) == 64u);
+  BOOST_TEST(creases_left(cylinder, 0., 70.) == 0u);
   // on a noisy elliptic cylinder (z from 0 to 6), no surface of revolution, the weak
   // ring stays
   BOOST_TEST(creases_left(fs_test::to_mesh<SM>(noisy_elliptic_cylinder()), 3., 30.) == 64u);
@@ -550,6 +551,84 @@ BOOST_AUTO_TEST_CASE(strong_creases_and_islands_inside_a_piece_are_cleared)
   BOOST_TEST(left[1] == 128u);
   BOOST_TEST(left[2] == 0u);
   BOOST_TEST(left[3] == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(regions_of_one_surface_and_clusters_of_islands_are_joined)
+{
+  // The noisy cylinder closed by flat caps of the test above, marked by hand: the caps'
+  // borders (90 degrees), a whole ring at z = 0 (70 degrees), which parts the cylinder
+  // into two regions of 1920 faces, and the borders of two islands of 24 faces side by
+  // side (70 degrees; 3 rows by 4 facets each, one from 0 to 4 facets round, the other
+  // from 4 to 8, their common border marked too). The two regions are one surface: the
+  // ring goes with or without clusters. The islands touch each other, so each alone is
+  // no island; as one cluster (a heavily noisy mesh) they are, and their borders go. The
+  // caps (64 faces each, normal to the cylinder) stay in both runs.
+  fs_test::Soup s = fs_test::noisy_cylinder(1., 6., 64, 30, 0.05);
+  const std::size_t side_faces = s.faces.size(), bottom = s.points.size(), top = bottom + 1;
+  s.points.push_back({ 0., 0., -3. });
+  s.points.push_back({ 0., 0., 3. });
+  for(std::size_t i = 0; i < 64; ++i)
+  {
+    const std::size_t j = (i + 1) % 64;
+    s.faces.push_back({ bottom, j, i });
+    s.faces.push_back({ top, 30 * 64 + i, 30 * 64 + j });
+  }
+  const SM m = fs_test::to_mesh<SM>(s);
+  const I::Mesh_indexing<SM> idx(m);
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+  auto island_of = [&](std::size_t f) {
+    const auto& c = g.centroid[f];
+    const double a = std::atan2(c.y(), c.x()) / (2 * M_PI / 64);
+    if(f >= side_faces || c.z() < 1. || c.z() > 1.6 || a < 0. || a > 8.) return 0;
+    return a < 4. ? 1 : 2;
+  };
+  std::vector<int> kind(idx.number_of_edges(), 0); // 1 cap, 2 ring, 3 island
+  std::array<std::size_t, 4> count{};
+  std::array<std::size_t, 3> island_faces{};
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f) ++island_faces[island_of(f)];
+  BOOST_TEST(island_faces[1] == 24u);
+  BOOST_TEST(island_faces[2] == 24u);
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto h = halfedge(idx.edge_at(e), m);
+    const std::size_t f = idx.face_id(h), f2 = idx.face_id(opposite(h, m));
+    const auto& p = m.point(source(h, m));
+    const auto& q = m.point(target(h, m));
+    if((f >= side_faces) != (f2 >= side_faces))
+      kind[e] = 1;
+    else if(std::abs(p.z()) < 0.01 && std::abs(q.z()) < 0.01)
+      kind[e] = 2;
+    else if(island_of(f) != island_of(f2))
+      kind[e] = 3;
+    ++count[kind[e]];
+  }
+  BOOST_TEST(count[1] == 128u);
+  BOOST_TEST(count[2] == 64u);
+  BOOST_TEST(count[3] == 25u); // 8 facets above and below, 3 rows at the ends and between
+  for(bool clusters : { false, true })
+  {
+    BOOST_TEST_CONTEXT("clusters " << clusters)
+    {
+      std::vector<char> is_crease(idx.number_of_edges(), 0);
+      std::vector<double> angle(idx.number_of_edges(), 0.);
+      for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+      {
+        is_crease[e] = kind[e] != 0;
+        angle[e] = kind[e] == 1 ? 90. : kind[e] != 0 ? 70. : 0.;
+      }
+      const std::size_t marked = I::mark_revolution_seams(idx, get(CGAL::vertex_point, m), g.normal, g.area,
+                                                          g.centroid, g.begin, g.ring, is_crease, &angle, true, clusters);
+      BOOST_TEST(marked == 0u); // one piece: no seam
+      std::array<std::size_t, 4> left{};
+      for(std::size_t e = 0; e < idx.number_of_edges(); ++e) left[kind[e]] += is_crease[e] == 1;
+      BOOST_TEST(left[1] == 128u);
+      BOOST_TEST(left[2] == 0u);
+      if(clusters)
+        BOOST_TEST(left[3] == 0u);
+      else
+        BOOST_TEST(left[3] == count[3]);
+    }
+  }
 }
 
 // Requires the mesh of `idx` to be rough but not noisy, as a smooth model is.

@@ -358,7 +358,8 @@ std::vector<char> detect_creases(const Mesh_indexing<TriangleMesh>& idx, VPM vpm
   // profiles' round-off and the facets of a flat subdivision would decide the pieces (an
   // exact rod 40 radii long cut in two).
   if(tangent && filtered)
-    mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease, &angle, plane_bordered);
+    mark_revolution_seams(idx, vpm, normal, area, centroid, begin, ring, is_crease, &angle, plane_bordered,
+                          raw_roughness >= crease_noisy_full_roughness);
   // the corners of the rolling-ball blends that the marked edges bound, on a clean
   // tessellation and a plane-bordered mesh
   if(tangent && (clean || plane_bordered))
