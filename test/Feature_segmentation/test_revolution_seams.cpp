@@ -489,17 +489,13 @@ BOOST_AUTO_TEST_CASE(weak_creases_inside_a_piece_are_cleared)
   BOOST_TEST(creases_left(fs_test::to_mesh<SM>(noisy_elliptic_cylinder()), 3., 30.) == 64u);
 }
 
-BOOST_AUTO_TEST_CASE(strong_creases_and_islands_inside_a_piece_are_cleared)
+// A noisy cylinder (radius 1, z from -3 to 3, 30 rows of 0.2, 64 facets round), closed
+// by two flat caps of 64 triangles each; its first `side_faces` faces are the side's.
+SM capped_noisy_cylinder(std::size_t& side_faces)
 {
-  // A noisy cylinder (radius 1, z from -3 to 3, 30 rows of 0.2, 64 facets round), closed
-  // by two flat caps of 64 triangles each. Marked by hand: the caps' borders (90
-  // degrees), half a ring at z = 0 (70 degrees, the edges with x > 0) and the border of
-  // an island of 24 faces (70 degrees: 3 rows by 4 facets). The cylinder is one straight
-  // piece of its profile: the half ring bounds nothing and is noise inside it; the
-  // island's normals follow the cylinder's, so its border is noise too; the caps (small
-  // regions inside the piece too) are normal to the cylinder and stay.
   fs_test::Soup s = fs_test::noisy_cylinder(1., 6., 64, 30, 0.05);
-  const std::size_t side_faces = s.faces.size(), bottom = s.points.size(), top = bottom + 1;
+  side_faces = s.faces.size();
+  const std::size_t bottom = s.points.size(), top = bottom + 1;
   s.points.push_back({ 0., 0., -3. });
   s.points.push_back({ 0., 0., 3. });
   for(std::size_t i = 0; i < 64; ++i)
@@ -508,21 +504,17 @@ BOOST_AUTO_TEST_CASE(strong_creases_and_islands_inside_a_piece_are_cleared)
     s.faces.push_back({ bottom, j, i });
     s.faces.push_back({ top, 30 * 64 + i, 30 * 64 + j });
   }
-  const SM m = fs_test::to_mesh<SM>(s);
-  const I::Mesh_indexing<SM> idx(m);
-  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
-  auto in_island = [&](std::size_t f) {
-    const auto& c = g.centroid[f];
-    const double a = std::atan2(c.y(), c.x());
-    return f < side_faces && c.z() > 1. && c.z() < 1.6 && a > 0. && a < 4 * 2 * M_PI / 64;
-  };
-  std::vector<char> is_crease(idx.number_of_edges(), 0);
-  std::vector<double> angle(idx.number_of_edges(), 0.);
-  std::vector<int> kind(idx.number_of_edges(), 0); // 1 cap, 2 half ring, 3 island
-  std::size_t island_faces = 0;
-  for(std::size_t f = 0; f < idx.number_of_faces(); ++f) island_faces += in_island(f);
-  BOOST_TEST(island_faces == 24u);
-  std::array<std::size_t, 4> count{};
+  return fs_test::to_mesh<SM>(s);
+}
+
+// Per edge of capped_noisy_cylinder(): 1 where a cap meets the side, 2 on the ring at
+// z = 0 (only its edges with x > 0 if `half`), 3 between faces of two islands or an
+// island and the rest (`island_of`: per face, its island or 0), else 0.
+template <typename Island>
+std::vector<int> capped_cylinder_edges(const SM& m, const I::Mesh_indexing<SM>& idx, std::size_t side_faces, bool half,
+                                       Island island_of)
+{
+  std::vector<int> kind(idx.number_of_edges(), 0);
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
   {
     const auto h = halfedge(idx.edge_at(e), m);
@@ -531,23 +523,67 @@ BOOST_AUTO_TEST_CASE(strong_creases_and_islands_inside_a_piece_are_cleared)
     const auto& q = m.point(target(h, m));
     if((f >= side_faces) != (f2 >= side_faces))
       kind[e] = 1;
-    else if(std::abs(p.z()) < 0.01 && std::abs(q.z()) < 0.01 && p.x() > 0 && q.x() > 0)
+    else if(std::abs(p.z()) < 0.01 && std::abs(q.z()) < 0.01 && (!half || (p.x() > 0 && q.x() > 0)))
       kind[e] = 2;
-    else if(in_island(f) != in_island(f2))
+    else if(island_of(f) != island_of(f2))
       kind[e] = 3;
-    if(kind[e] == 0) continue;
-    is_crease[e] = 1;
-    angle[e] = kind[e] == 1 ? 90. : 70.;
-    ++count[kind[e]];
   }
-  BOOST_TEST(count[1] == 128u);
-  BOOST_TEST(count[2] >= 28u);
-  BOOST_TEST(count[3] >= 14u);
+  return kind;
+}
+
+// Marks the edges of capped_noisy_cylinder() by hand (capped_cylinder_edges(), the
+// ring whole or `half`, `islands` islands of 3 rows by 4 facets side by side from 0
+// facets round, between z = 1 and 1.6), the caps' borders at 90 degrees and the others
+// at 70, and runs mark_revolution_seams() on them, with `clusters` or not; `count`
+// receives the edges of each kind, and the edges of each kind left marked 1 are
+// returned. None may be marked 2 (the cylinder is one piece).
+std::array<std::size_t, 4> capped_cylinder_creases_left(bool half, int islands, bool clusters,
+                                                        std::array<std::size_t, 4>& count)
+{
+  std::size_t side_faces = 0;
+  const SM m = capped_noisy_cylinder(side_faces);
+  const I::Mesh_indexing<SM> idx(m);
+  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
+  auto island_of = [&](std::size_t f) {
+    const auto& c = g.centroid[f];
+    const double a = std::atan2(c.y(), c.x()) / (2 * M_PI / 64);
+    if(f >= side_faces || c.z() < 1. || c.z() > 1.6 || a < 0. || a > 4. * islands) return 0;
+    return 1 + int(a / 4.);
+  };
+  std::vector<std::size_t> island_faces(islands + 1, 0);
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f) ++island_faces[island_of(f)];
+  for(int k = 1; k <= islands; ++k) BOOST_TEST(island_faces[k] == 24u);
+  const std::vector<int> kind = capped_cylinder_edges(m, idx, side_faces, half, island_of);
+  count = {};
+  for(int k : kind) ++count[k];
+  std::vector<char> is_crease(idx.number_of_edges(), 0);
+  std::vector<double> angle(idx.number_of_edges(), 0.);
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    is_crease[e] = kind[e] != 0;
+    angle[e] = kind[e] == 1 ? 90. : kind[e] != 0 ? 70. : 0.;
+  }
   const std::size_t marked = I::mark_revolution_seams(idx, get(CGAL::vertex_point, m), g.normal, g.area, g.centroid,
-                                                      g.begin, g.ring, is_crease, &angle);
+                                                      g.begin, g.ring, is_crease, &angle, true, clusters);
   BOOST_TEST(marked == 0u); // one piece: no seam
   std::array<std::size_t, 4> left{};
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e) left[kind[e]] += is_crease[e] == 1;
+  return left;
+}
+
+BOOST_AUTO_TEST_CASE(strong_creases_and_islands_inside_a_piece_are_cleared)
+{
+  // The capped noisy cylinder, marked by hand: the caps' borders (90 degrees), half a
+  // ring at z = 0 (70 degrees, the edges with x > 0) and the border of an island of 24
+  // faces (70 degrees: 3 rows by 4 facets). The cylinder is one straight piece of its
+  // profile: the half ring bounds nothing and is noise inside it; the island's normals
+  // follow the cylinder's, so its border is noise too; the caps (small regions inside
+  // the piece too) are normal to the cylinder and stay.
+  std::array<std::size_t, 4> count{};
+  const std::array<std::size_t, 4> left = capped_cylinder_creases_left(true, 1, false, count);
+  BOOST_TEST(count[1] == 128u);
+  BOOST_TEST(count[2] >= 28u);
+  BOOST_TEST(count[3] == 14u); // 4 facets above and below, 3 rows at either end
   BOOST_TEST(left[1] == 128u);
   BOOST_TEST(left[2] == 0u);
   BOOST_TEST(left[3] == 0u);
@@ -555,78 +591,26 @@ BOOST_AUTO_TEST_CASE(strong_creases_and_islands_inside_a_piece_are_cleared)
 
 BOOST_AUTO_TEST_CASE(regions_of_one_surface_and_clusters_of_islands_are_joined)
 {
-  // The noisy cylinder closed by flat caps of the test above, marked by hand: the caps'
-  // borders (90 degrees), a whole ring at z = 0 (70 degrees), which parts the cylinder
-  // into two regions of 1920 faces, and the borders of two islands of 24 faces side by
-  // side (70 degrees; 3 rows by 4 facets each, one from 0 to 4 facets round, the other
-  // from 4 to 8, their common border marked too). The two regions are one surface: the
-  // ring goes with or without clusters. The islands touch each other, so each alone is
-  // no island; as one cluster (a heavily noisy mesh) they are, and their borders go. The
-  // caps (64 faces each, normal to the cylinder) stay in both runs.
-  fs_test::Soup s = fs_test::noisy_cylinder(1., 6., 64, 30, 0.05);
-  const std::size_t side_faces = s.faces.size(), bottom = s.points.size(), top = bottom + 1;
-  s.points.push_back({ 0., 0., -3. });
-  s.points.push_back({ 0., 0., 3. });
-  for(std::size_t i = 0; i < 64; ++i)
-  {
-    const std::size_t j = (i + 1) % 64;
-    s.faces.push_back({ bottom, j, i });
-    s.faces.push_back({ top, 30 * 64 + i, 30 * 64 + j });
-  }
-  const SM m = fs_test::to_mesh<SM>(s);
-  const I::Mesh_indexing<SM> idx(m);
-  const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
-  auto island_of = [&](std::size_t f) {
-    const auto& c = g.centroid[f];
-    const double a = std::atan2(c.y(), c.x()) / (2 * M_PI / 64);
-    if(f >= side_faces || c.z() < 1. || c.z() > 1.6 || a < 0. || a > 8.) return 0;
-    return a < 4. ? 1 : 2;
-  };
-  std::vector<int> kind(idx.number_of_edges(), 0); // 1 cap, 2 ring, 3 island
-  std::array<std::size_t, 4> count{};
-  std::array<std::size_t, 3> island_faces{};
-  for(std::size_t f = 0; f < idx.number_of_faces(); ++f) ++island_faces[island_of(f)];
-  BOOST_TEST(island_faces[1] == 24u);
-  BOOST_TEST(island_faces[2] == 24u);
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-  {
-    const auto h = halfedge(idx.edge_at(e), m);
-    const std::size_t f = idx.face_id(h), f2 = idx.face_id(opposite(h, m));
-    const auto& p = m.point(source(h, m));
-    const auto& q = m.point(target(h, m));
-    if((f >= side_faces) != (f2 >= side_faces))
-      kind[e] = 1;
-    else if(std::abs(p.z()) < 0.01 && std::abs(q.z()) < 0.01)
-      kind[e] = 2;
-    else if(island_of(f) != island_of(f2))
-      kind[e] = 3;
-    ++count[kind[e]];
-  }
-  BOOST_TEST(count[1] == 128u);
-  BOOST_TEST(count[2] == 64u);
-  BOOST_TEST(count[3] == 25u); // 8 facets above and below, 3 rows at the ends and between
+  // The capped noisy cylinder, marked by hand: the caps' borders (90 degrees), a whole
+  // ring at z = 0 (70 degrees), which parts the cylinder into two regions of 1920
+  // faces, and the borders of two islands of 24 faces side by side (70 degrees; 3 rows
+  // by 4 facets each, one from 0 to 4 facets round, the other from 4 to 8, their common
+  // border marked too). The two regions are one surface: the ring goes with or without
+  // clusters. The islands touch each other, so each alone is no island; as one cluster
+  // (a heavily noisy mesh) they are, and their borders go. The caps (64 faces each,
+  // normal to the cylinder) stay in both runs.
   for(bool clusters : { false, true })
   {
     BOOST_TEST_CONTEXT("clusters " << clusters)
     {
-      std::vector<char> is_crease(idx.number_of_edges(), 0);
-      std::vector<double> angle(idx.number_of_edges(), 0.);
-      for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-      {
-        is_crease[e] = kind[e] != 0;
-        angle[e] = kind[e] == 1 ? 90. : kind[e] != 0 ? 70. : 0.;
-      }
-      const std::size_t marked = I::mark_revolution_seams(idx, get(CGAL::vertex_point, m), g.normal, g.area,
-                                                          g.centroid, g.begin, g.ring, is_crease, &angle, true, clusters);
-      BOOST_TEST(marked == 0u); // one piece: no seam
-      std::array<std::size_t, 4> left{};
-      for(std::size_t e = 0; e < idx.number_of_edges(); ++e) left[kind[e]] += is_crease[e] == 1;
+      std::array<std::size_t, 4> count{};
+      const std::array<std::size_t, 4> left = capped_cylinder_creases_left(false, 2, clusters, count);
+      BOOST_TEST(count[1] == 128u);
+      BOOST_TEST(count[2] == 64u);
+      BOOST_TEST(count[3] == 25u); // 8 facets above and below, 3 rows at the ends and between
       BOOST_TEST(left[1] == 128u);
       BOOST_TEST(left[2] == 0u);
-      if(clusters)
-        BOOST_TEST(left[3] == 0u);
-      else
-        BOOST_TEST(left[3] == count[3]);
+      BOOST_TEST(left[3] == (clusters ? 0u : count[3]));
     }
   }
 }

@@ -129,12 +129,16 @@ struct Revolution_seams
   // there). Two regions of one surface of revolution that creases of noise part are
   // joined under the same angle (join_coaxial_regions()).
   static constexpr double island_angle = 30.;
+  // The pairs of regions are tried in at most `join_rounds` rounds, while a round joins
+  // some: over three noise realisations at 0.3%, the fine long tube goes from 0.71 (one
+  // round) to 0.75 (no other part changes); on it no round after the second joins any.
+  static constexpr int join_rounds = 4;
   // On a heavily noisy mesh, the small regions left join a piece round by round
   // (join_islands()) if `grow_border_share` of their border edges or more run along it
   // and their centroids' mean squared offset from its profile line is at most
   // `grow_offset` squared times the piece's own, in at most `grow_rounds` rounds. Over
-  // three noise realisations at 0.3%, the fine long tube goes from 0.39 to 0.71 with
-  // them; with shares of 0.5 and 0.7 (and no offset test) it reaches only 0.42 and
+  // three noise realisations at 0.3% (with one round of joins), the fine long tube goes
+  // from 0.39 to 0.71 with them; with shares of 0.5 and 0.7 (and no offset test) it reaches only 0.42 and
   // 0.40, and without the offset test the fine filleted bar falls from 0.94 to 0.56
   // (near a fillet its tangent planes face as the fillet's cylinder does).
   static constexpr double grow_border_share = 0.3;
@@ -764,8 +768,9 @@ std::vector<std::size_t> small_region_clusters(const Mesh_indexing<TriangleMesh>
 // or more from a cut, and the two sides' mean normals in that piece, in the profile
 // plane, make at most Revolution_seams::island_angle degrees (on one surface they agree;
 // the outer and inner walls of a thin tube, whose profiles noise runs together, face
-// opposite ways). The pairs are tried from the most faces that touch down; the faces of
-// a joined pair take the pieces of their common profile. `region`: per face, on return
+// opposite ways). The pairs are tried from the most faces that touch down, in rounds
+// while a round joins some (Revolution_seams::join_rounds); the faces of a joined pair
+// take the pieces of their common profile. `region`: per face, on return
 // the root of the joined regions it lies in.
 template <typename TriangleMesh>
 void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std::size_t>& edge_faces,
@@ -842,51 +847,63 @@ void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vec
   };
   const double least_cosine = std::cos(Limits::island_angle * CGAL_PI / 180.);
   std::vector<std::size_t> position(nf, none), distance;
-  for(const auto& candidate : order)
+  // round after round while a pair is joined: a pair whose profiles a gap parts may join
+  // once a third region fills it
+  for(int round = 0; round < Limits::join_rounds; ++round)
   {
-    const std::size_t a = joined.find(candidate.first.first), b = joined.find(candidate.first.second);
-    if(a == b) continue;
-    std::vector<std::size_t> faces = faces_at(a);
-    const std::size_t split = faces.size();
-    faces.insert(faces.end(), faces_at(b).begin(), faces_at(b).end());
-    std::vector<Pair> pairs = pairs_at(a);
-    pairs.insert(pairs.end(), pairs_at(b).begin(), pairs_at(b).end());
-    const std::size_t joining = faces.size();
-    const auto bridges = between.find(candidate.first);
-    if(bridges != between.end())
-      for(std::size_t c : bridges->second)
-        if(cluster_faces[c].size() < joining) faces.insert(faces.end(), cluster_faces[c].begin(), cluster_faces[c].end());
-    std::pair<Eigen::Vector3d, Eigen::Vector3d> axis;
-    const std::vector<std::size_t> p = revolution_pieces(faces, pairs, centroid, smooth, area, h, &distance, &axis);
-    if(p.empty()) continue;
-    for(std::size_t i = 0; i < faces.size(); ++i) position[faces[i]] = i;
-    const auto& sides = touching.at(candidate.first);
-    const std::size_t k = p[position[sides.first.front()]];
-    bool one = true;
-    for(const std::vector<std::size_t>* side : { &sides.first, &sides.second })
-      for(std::size_t f : *side)
-        one = one && p[position[f]] == k && distance[position[f]] >= Limits::clear_margin;
-    if(!one) continue;
-    // the two sides' mean normals in piece k, in the profile plane (along the axis, away
-    // from it)
-    Eigen::Vector2d mean[2] = { Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero() };
-    for(std::size_t i = 0; i < joining; ++i)
-      if(p[i] == k) mean[i < split ? 0 : 1] += area[faces[i]] * profile_normal(centroid[faces[i]], smooth[faces[i]], axis);
-    if(!(mean[0].norm() > 0 && mean[1].norm() > 0) || mean[0].normalized().dot(mean[1].normalized()) < least_cosine)
-      continue;
-    faces.resize(joining);
-    for(std::size_t i = 0; i < joining; ++i)
+    bool joined_any = false;
+    for(const auto& candidate : order)
     {
-      piece[faces[i]] = p[i];
-      cut_distance[faces[i]] = distance[i];
+      const std::size_t a = joined.find(candidate.first.first), b = joined.find(candidate.first.second);
+      if(a == b) continue;
+      std::vector<std::size_t> faces = faces_at(a);
+      const std::size_t split = faces.size();
+      faces.insert(faces.end(), faces_at(b).begin(), faces_at(b).end());
+      std::vector<Pair> pairs = pairs_at(a);
+      pairs.insert(pairs.end(), pairs_at(b).begin(), pairs_at(b).end());
+      const std::size_t joining = faces.size();
+      const auto bridges = between.find(candidate.first);
+      if(bridges != between.end())
+        for(std::size_t c : bridges->second)
+        {
+          const std::vector<std::size_t>& bridge = cluster_faces[c];
+          if(bridge.size() < joining) faces.insert(faces.end(), bridge.begin(), bridge.end());
+        }
+      std::pair<Eigen::Vector3d, Eigen::Vector3d> axis;
+      const std::vector<std::size_t> p = revolution_pieces(faces, pairs, centroid, smooth, area, h, &distance, &axis);
+      if(p.empty()) continue;
+      for(std::size_t i = 0; i < faces.size(); ++i) position[faces[i]] = i;
+      const auto& sides = touching.at(candidate.first);
+      const std::size_t k = p[position[sides.first.front()]];
+      bool one = true;
+      for(const std::vector<std::size_t>* side : { &sides.first, &sides.second })
+        for(std::size_t f : *side)
+          one = one && p[position[f]] == k && distance[position[f]] >= Limits::clear_margin;
+      if(!one) continue;
+      // the two sides' mean normals in piece k, in the profile plane (along the axis, away
+      // from it)
+      Eigen::Vector2d mean[2] = { Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero() };
+      for(std::size_t i = 0; i < joining; ++i)
+        if(p[i] == k)
+          mean[i < split ? 0 : 1] += area[faces[i]] * profile_normal(centroid[faces[i]], smooth[faces[i]], axis);
+      if(!(mean[0].norm() > 0 && mean[1].norm() > 0) || mean[0].normalized().dot(mean[1].normalized()) < least_cosine)
+        continue;
+      faces.resize(joining);
+      for(std::size_t i = 0; i < joining; ++i)
+      {
+        piece[faces[i]] = p[i];
+        cut_distance[faces[i]] = distance[i];
+      }
+      joined.unite(a, b);
+      const std::size_t r = joined.find(a), other = r == a ? b : a;
+      axis_of[r] = axis;
+      faces_of[r] = std::move(faces);
+      pairs_of[r] = std::move(pairs);
+      faces_of.erase(other);
+      pairs_of.erase(other);
+      joined_any = true;
     }
-    joined.unite(a, b);
-    const std::size_t r = joined.find(a), other = r == a ? b : a;
-    axis_of[r] = axis;
-    faces_of[r] = std::move(faces);
-    pairs_of[r] = std::move(pairs);
-    faces_of.erase(other);
-    pairs_of.erase(other);
+    if(!joined_any) break;
   }
   for(std::size_t f = 0; f < nf; ++f) region[f] = joined.find(regions.root[f]);
 }
@@ -912,7 +929,8 @@ template <typename TriangleMesh>
 void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std::size_t>& edge_faces,
                   const Seam_regions& regions, const std::vector<std::size_t>& key,
                   const std::vector<Eigen::Vector3d>& centroid, const std::vector<Eigen::Vector3d>& smooth,
-                  const std::vector<double>& area, const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d> >& axis,
+                  const std::vector<double>& area,
+                  const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d> >& axis,
                   bool grow, std::vector<std::size_t>& piece, std::vector<std::size_t>& cut_distance,
                   std::vector<std::size_t>& region)
 {
@@ -943,7 +961,9 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
     Sums& x = sums[Piece(region[f], piece[f])];
     x.normal += area[f] * profile_normal(centroid[f], smooth[f], axis[region[f]]);
     const Eigen::Vector2d q = profile_point(centroid[f], axis[region[f]]);
-    x.moments += area[f] * (Eigen::Matrix<double, 6, 1>() << 1., q(0), q(0) * q(0), q(1), q(0) * q(1), q(1) * q(1)).finished();
+    Eigen::Matrix<double, 6, 1> moments;
+    moments << 1., q(0), q(0) * q(0), q(1), q(0) * q(1), q(1) * q(1);
+    x.moments += area[f] * moments;
   }
   // per cluster of small regions (at its root): the region and piece of all its
   // neighbours, or mixed
@@ -980,7 +1000,8 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
   for(std::size_t f = 0; f < nf; ++f)
   {
     const std::size_t r = key[f];
-    if(island(r) && agree(mean[r], sums.at(Piece(around[r], around_piece[r])).normal)) join(f, around[r], around_piece[r]);
+    if(island(r) && agree(mean[r], sums.at(Piece(around[r], around_piece[r])).normal))
+      join(f, around[r], around_piece[r]);
   }
   if(!grow) return;
   // each piece's profile line r = a + b z, and its mean squared offset from it
@@ -1020,6 +1041,7 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
         }
       }
     }
+
     auto candidate = [&](std::size_t r) {
       return to[r] != none && to[r] != mixed && double(along[r]) >= Limits::grow_border_share * double(border[r]);
     };
@@ -1229,7 +1251,8 @@ std::size_t mark_revolution_seams(const Mesh_indexing<TriangleMesh>& idx, VPM vp
     const std::vector<std::size_t> key = clusters ? small_region_clusters(idx, edge_faces, *outer) : outer->root;
     join_coaxial_regions(idx, edge_faces, *outer, key, centroid, smooth, area, median_edge, outer_piece, cut_distance,
                          region, axis_of);
-    join_islands(idx, edge_faces, *outer, key, centroid, smooth, area, axis_of, clusters, outer_piece, cut_distance, region);
+    join_islands(idx, edge_faces, *outer, key, centroid, smooth, area, axis_of, clusters, outer_piece, cut_distance,
+                 region);
     for(std::size_t e = 0; e < ne; ++e)
     {
       const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
