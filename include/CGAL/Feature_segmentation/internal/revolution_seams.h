@@ -42,6 +42,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
@@ -805,19 +806,18 @@ void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vec
   }
   // the clusters between each pair, whose faces fill the gap between their profiles
   std::map<Pair, std::vector<std::size_t> > between;
-  for(auto& kv : around)
+  for(const auto& kv : around)
   {
-    std::vector<std::size_t>& faces = kv.second;
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    for(std::size_t i = 0; i < faces.size(); ++i)
-      for(std::size_t j = i + 1; j < faces.size(); ++j)
+    // the faces round the cluster by region, each region's touching those of every other
+    std::map<std::size_t, std::vector<std::size_t> > by_region;
+    for(std::size_t f : kv.second) by_region[regions.root[f]].push_back(f);
+    for(auto a = by_region.begin(); a != by_region.end(); ++a)
+      for(auto b = std::next(a); b != by_region.end(); ++b)
       {
-        touch(faces[i], faces[j]);
-        const std::size_t a = regions.root[faces[i]], b = regions.root[faces[j]];
-        if(a == b) continue;
-        std::vector<std::size_t>& c = between[std::minmax(a, b)];
-        if(c.empty() || c.back() != kv.first) c.push_back(kv.first);
+        auto& sides = touching[Pair(a->first, b->first)];
+        sides.first.insert(sides.first.end(), a->second.begin(), a->second.end());
+        sides.second.insert(sides.second.end(), b->second.begin(), b->second.end());
+        between[Pair(a->first, b->first)].push_back(kv.first);
       }
   }
   std::map<std::size_t, std::vector<std::size_t> > cluster_faces;
