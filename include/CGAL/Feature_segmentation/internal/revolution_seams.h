@@ -139,9 +139,10 @@ struct Revolution_seams
   // and their centroids' mean squared offset from its profile line is at most
   // `grow_offset` squared times the piece's own, in at most `grow_rounds` rounds. Over
   // three noise realisations at 0.3% (with one round of joins), the fine long tube goes
-  // from 0.39 to 0.71 with them; with shares of 0.5 and 0.7 (and no offset test) it reaches only 0.42 and
-  // 0.40, and without the offset test the fine filleted bar falls from 0.94 to 0.56
-  // (near a fillet its tangent planes face as the fillet's cylinder does).
+  // from 0.39 to 0.71 with them; with shares of 0.5 and 0.7 (and no offset test) it
+  // reaches only 0.42 and 0.40, and without the offset test the fine filleted bar falls
+  // from 0.94 to 0.56 (near a fillet its tangent planes face as the fillet's cylinder
+  // does).
   static constexpr double grow_border_share = 0.3;
   static constexpr double grow_offset = 2.;
   static constexpr int grow_rounds = 100;
@@ -771,8 +772,8 @@ std::vector<std::size_t> small_region_clusters(const Mesh_indexing<TriangleMesh>
 // the outer and inner walls of a thin tube, whose profiles noise runs together, face
 // opposite ways). The pairs are tried from the most faces that touch down, in rounds
 // while a round joins some (Revolution_seams::join_rounds); the faces of a joined pair
-// take the pieces of their common profile. `region`: per face, on return
-// the root of the joined regions it lies in.
+// take the pieces of their common profile, and their root in `axis_of` the axis of that
+// profile. `region`: per face, on return the root of the joined regions it lies in.
 template <typename TriangleMesh>
 void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std::size_t>& edge_faces,
                           const Seam_regions& regions, const std::vector<std::size_t>& key,
