@@ -716,6 +716,9 @@ struct Seam_regions
   {
     return root[f] == f && members[f].size() >= Revolution_seams::least_faces;
   }
+
+  // whether the face f lies in a region too small to be fitted
+  bool small(std::size_t f) const { return !fitted(root[f]); }
 };
 
 // The height along the axis `axis` (its unit direction and a point) of the point c and
@@ -746,16 +749,15 @@ std::vector<std::size_t> small_region_clusters(const Mesh_indexing<TriangleMesh>
                                                const std::vector<std::size_t>& edge_faces, const Seam_regions& regions)
 {
   const std::size_t nf = regions.root.size(), ne = edge_faces.size() / 2;
-  auto small = [&](std::size_t f) { return !regions.fitted(regions.root[f]); };
   Smallest_root_union_find clusters(nf);
   for(std::size_t e = 0; e < ne; ++e)
   {
     const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
-    if(f != idx.npos && g != idx.npos && small(f) && small(g)) clusters.unite(f, g);
+    if(f != idx.npos && g != idx.npos && regions.small(f) && regions.small(g)) clusters.unite(f, g);
   }
   std::vector<std::size_t> key = clusters.roots();
   for(std::size_t f = 0; f < nf; ++f)
-    if(!small(f)) key[f] = regions.root[f];
+    if(!regions.small(f)) key[f] = regions.root[f];
   return key;
 }
 
@@ -784,7 +786,6 @@ void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vec
 {
   typedef Revolution_seams Limits;
   const std::size_t nf = regions.root.size(), ne = edge_faces.size() / 2, none = std::size_t(-1);
-  auto small = [&](std::size_t f) { return !regions.fitted(regions.root[f]); };
   // per pair of regions with pieces that touch, the faces of each that touch the other
   typedef std::pair<std::size_t, std::size_t> Pair;
   std::map<Pair, std::pair<std::vector<std::size_t>, std::vector<std::size_t> > > touching;
@@ -802,8 +803,8 @@ void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vec
     const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
     if(f == idx.npos || g == idx.npos) continue;
     if(piece[f] != none && piece[g] != none) touch(f, g);
-    else if(small(f) && piece[g] != none) around[key[f]].push_back(g);
-    else if(small(g) && piece[f] != none) around[key[g]].push_back(f);
+    else if(regions.small(f) && piece[g] != none) around[key[f]].push_back(g);
+    else if(regions.small(g) && piece[f] != none) around[key[g]].push_back(f);
   }
   // the clusters between each pair, whose faces fill the gap between their profiles
   std::map<Pair, std::vector<std::size_t> > between;
@@ -824,7 +825,7 @@ void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vec
   std::map<std::size_t, std::vector<std::size_t> > cluster_faces;
   if(!between.empty())
     for(std::size_t f = 0; f < nf; ++f)
-      if(small(f) && around.count(key[f])) cluster_faces[key[f]].push_back(f);
+      if(regions.small(f) && around.count(key[f])) cluster_faces[key[f]].push_back(f);
   if(touching.empty()) return;
   std::vector<std::pair<Pair, std::size_t> > order; // (pair, faces that touch)
   for(auto& kv : touching)
@@ -938,7 +939,6 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
   typedef Revolution_seams Limits;
   const std::size_t nf = regions.root.size(), ne = edge_faces.size() / 2;
   const std::size_t none = std::size_t(-1), mixed = std::size_t(-2);
-  auto small = [&](std::size_t f) { return !regions.fitted(regions.root[f]); };
   auto inside = [&](std::size_t f) { return piece[f] != none && cut_distance[f] >= Limits::clear_margin; };
   const double least_cosine = std::cos(Limits::island_angle * CGAL_PI / 180.);
   auto agree = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -957,7 +957,7 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
   for(std::size_t f = 0; f < nf; ++f)
   {
     ++cluster_size[key[f]];
-    if(small(f) || piece[f] == none) continue;
+    if(regions.small(f) || piece[f] == none) continue;
     ++region_size[region[f]];
     Sums& x = sums[Piece(region[f], piece[f])];
     x.normal += area[f] * profile_normal(centroid[f], smooth[f], axis[region[f]]);
@@ -971,7 +971,7 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
   std::vector<std::size_t> around(nf, none), around_piece(nf, none);
   auto neighbour = [&](std::size_t r, std::size_t g) {
     if(around[r] == mixed) return;
-    if(g == idx.npos || small(g) || !inside(g))
+    if(g == idx.npos || regions.small(g) || !inside(g))
       around[r] = mixed;
     else if(around[r] == none)
     {
@@ -984,8 +984,8 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
   for(std::size_t e = 0; e < ne; ++e)
   {
     const std::size_t f = edge_faces[2 * e], g = edge_faces[2 * e + 1];
-    if(f != idx.npos && small(f) && (g == idx.npos || key[g] != key[f])) neighbour(key[f], g);
-    if(g != idx.npos && small(g) && (f == idx.npos || key[f] != key[g])) neighbour(key[g], f);
+    if(f != idx.npos && regions.small(f) && (g == idx.npos || key[g] != key[f])) neighbour(key[f], g);
+    if(g != idx.npos && regions.small(g) && (f == idx.npos || key[f] != key[g])) neighbour(key[g], f);
   }
   auto island = [&](std::size_t r) {
     return around[r] != none && around[r] != mixed && cluster_size[r] < region_size[around[r]];
@@ -1016,7 +1016,7 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
   }
   // a face that is no candidate: one of a region that is not small, or one joined
   std::vector<char> settled(nf, 0);
-  for(std::size_t f = 0; f < nf; ++f) settled[f] = !small(f) || piece[f] != none;
+  for(std::size_t f = 0; f < nf; ++f) settled[f] = !regions.small(f) || piece[f] != none;
   for(int round = 0; round < Limits::grow_rounds; ++round)
   {
     // per small region left (at its root): its border edges, those along a piece, which
