@@ -490,19 +490,41 @@ BOOST_AUTO_TEST_CASE(weak_creases_inside_a_piece_are_cleared)
 }
 
 // A noisy cylinder (radius 1, z from -3 to 3, 30 rows of 0.2, 64 facets round), closed
-// by two flat caps of 64 triangles each; its first `side_faces` faces are the side's.
-SM capped_noisy_cylinder(std::size_t& side_faces)
+// at the bottom by a flat cap of 64 triangles and at the top by one too, or with
+// `cone_rings` by a cone of that many rings of triangles (2 per facet, 64 at the apex)
+// rising by 20 degrees from the rim, its points moved along z by the noise of the
+// cylinder; its first `side_faces` faces are the side's.
+SM capped_noisy_cylinder(std::size_t& side_faces, int cone_rings = 0)
 {
   fs_test::Soup s = fs_test::noisy_cylinder(1., 6., 64, 30, 0.05);
   side_faces = s.faces.size();
   const std::size_t bottom = s.points.size(), top = bottom + 1;
+  const double rise = std::tan(20. * M_PI / 180.);
   s.points.push_back({ 0., 0., -3. });
-  s.points.push_back({ 0., 0., 3. });
+  s.points.push_back({ 0., 0., cone_rings > 0 ? 3. + rise : 3. });
+  // the cone's inner rings (ring 0: the cylinder's top row)
+  fs_test::Soup cone;
+  for(int j = 1; j < cone_rings; ++j)
+    for(std::size_t i = 0; i < 64; ++i)
+    {
+      const double rho = 1. - double(j) / cone_rings, a = 2 * M_PI * double(i) / 64;
+      cone.points.push_back({ rho * std::cos(a), rho * std::sin(a), 3. + (1. - rho) * rise });
+    }
+  fs_test::add_noise_along(cone, std::vector<std::array<double, 3> >(cone.points.size(), { 0., 0., 1. }), 0.05);
+  const std::size_t first_ring = s.points.size();
+  s.points.insert(s.points.end(), cone.points.begin(), cone.points.end());
+  auto ring = [&](int j, std::size_t i) { return j == 0 ? 30 * 64 + i : first_ring + std::size_t(j - 1) * 64 + i; };
   for(std::size_t i = 0; i < 64; ++i)
   {
     const std::size_t j = (i + 1) % 64;
     s.faces.push_back({ bottom, j, i });
-    s.faces.push_back({ top, 30 * 64 + i, 30 * 64 + j });
+    for(int k = 1; k < cone_rings; ++k)
+    {
+      s.faces.push_back({ ring(k, i), ring(k - 1, i), ring(k - 1, j) });
+      s.faces.push_back({ ring(k, i), ring(k - 1, j), ring(k, j) });
+    }
+    const int last = (std::max)(cone_rings - 1, 0);
+    s.faces.push_back({ top, ring(last, i), ring(last, j) });
   }
   return fs_test::to_mesh<SM>(s);
 }
@@ -531,23 +553,25 @@ std::vector<int> capped_cylinder_edges(const SM& m, const I::Mesh_indexing<SM>& 
   return kind;
 }
 
-// Marks the edges of capped_noisy_cylinder() by hand (capped_cylinder_edges(), the
-// ring whole or `half`, `islands` islands of 3 rows by 4 facets side by side from 0
-// facets round, between z = 1 and 1.6), the caps' borders at 90 degrees and the others
-// at 70, and runs mark_revolution_seams() on them, with `clusters` or not; `count`
-// receives the edges of each kind, and the edges of each kind left marked 1 are
-// returned. None may be marked 2 (the cylinder is one piece).
+// Marks the edges of capped_noisy_cylinder() (with `cone_rings`) by hand
+// (capped_cylinder_edges(), the ring whole or `half`, `islands` islands of 3 rows by 4
+// facets side by side from 0 facets round, between z = `island_z` and `island_z` + 0.6),
+// the caps' borders at 90 degrees and the others at 70, and runs mark_revolution_seams()
+// on them, with `clusters` or not; `count` receives the edges of each kind, and the edges
+// of each kind left marked 1 are returned. None may be marked 2 (the cylinder and the
+// cone are one piece each).
 std::array<std::size_t, 4> capped_cylinder_creases_left(bool half, int islands, bool clusters,
-                                                        std::array<std::size_t, 4>& count)
+                                                        std::array<std::size_t, 4>& count, double island_z = 1.,
+                                                        int cone_rings = 0)
 {
   std::size_t side_faces = 0;
-  const SM m = capped_noisy_cylinder(side_faces);
+  const SM m = capped_noisy_cylinder(side_faces, cone_rings);
   const I::Mesh_indexing<SM> idx(m);
   const fs_test::Face_geometry g = fs_test::face_geometry_of(idx);
   auto island_of = [&](std::size_t f) {
     const auto& c = g.centroid[f];
     const double a = std::atan2(c.y(), c.x()) / (2 * M_PI / 64);
-    if(f >= side_faces || c.z() < 1. || c.z() > 1.6 || a < 0. || a > 4. * islands) return 0;
+    if(f >= side_faces || c.z() < island_z || c.z() > island_z + 0.6 || a < 0. || a > 4. * islands) return 0;
     return 1 + int(a / 4.);
   };
   std::vector<std::size_t> island_faces(islands + 1, 0);
@@ -608,6 +632,31 @@ BOOST_AUTO_TEST_CASE(regions_of_one_surface_and_clusters_of_islands_are_joined)
       BOOST_TEST(count[1] == 128u);
       BOOST_TEST(count[2] == 64u);
       BOOST_TEST(count[3] == 25u); // 8 facets above and below, 3 rows at the ends and between
+      BOOST_TEST(left[1] == 128u);
+      BOOST_TEST(left[2] == 0u);
+      BOOST_TEST(left[3] == (clusters ? 0u : count[3]));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(small_region_at_an_end_grows_into_its_piece)
+{
+  // The noisy cylinder capped at the top by a cone of 4 rings (448 faces, one piece of
+  // its own profile, its profile normal 70 degrees from the cylinder's), marked by hand:
+  // the caps' borders (90 degrees) and the border of a region of 24 faces (70 degrees: 3
+  // rows by 4 facets) in the cylinder's top rows, which touches the cone. Its neighbours
+  // lie in two pieces, so it is no island; on a heavily noisy mesh (clusters) it grows
+  // into the cylinder's piece, whose profile normal agrees with its own, where the
+  // cone's does not: its border with the cylinder goes and the one with the cone stays.
+  for(bool clusters : { false, true })
+  {
+    BOOST_TEST_CONTEXT("clusters " << clusters)
+    {
+      std::array<std::size_t, 4> count{};
+      const std::array<std::size_t, 4> left = capped_cylinder_creases_left(false, 1, clusters, count, 2.4, 4);
+      BOOST_TEST(count[1] == 128u);
+      BOOST_TEST(count[2] == 64u); // the ring at z = 0, marked too: one surface, it goes
+      BOOST_TEST(count[3] == 10u); // 4 facets below, 3 rows at either end
       BOOST_TEST(left[1] == 128u);
       BOOST_TEST(left[2] == 0u);
       BOOST_TEST(left[3] == (clusters ? 0u : count[3]));
