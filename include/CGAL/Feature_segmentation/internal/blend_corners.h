@@ -249,9 +249,14 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
   };
   std::vector<double> magnitude, spacing;
   std::vector<std::size_t> sample;
-  // per corner, the centre of its sphere, its radius and the band about it
-  std::vector<Eigen::Vector3d> centre_of;
-  std::vector<std::pair<double, double> > sphere_of;
+  // per corner, its sphere: the centre, the radius and the band about it that holds the
+  // corner's centroids
+  struct Sphere
+  {
+    Eigen::Vector3d centre;
+    double radius, band;
+  };
+  std::vector<Sphere> sphere_of;
   // the cylinders next to a corner: the sum of the directions from the corner's centre to
   // their faces' centres of curvature, their faces, the second moments of their raw normals
   struct Cylinder
@@ -265,11 +270,12 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
   std::vector<std::size_t> nearby;
   std::vector<char> inside;
   const double to_radians = 3.14159265358979323846 / 180.;
-  // Moves the border of corner `id` (its sphere's centre `c` and radius `radius`) among
-  // the faces `faces` of its blend to the planes where the sphere meets the cylinders
-  // (file comment); `centre_at`: a face's centre of curvature.
-  auto refine_corner = [&](const auto& faces, std::size_t id, const Eigen::Vector3d& c, double radius,
-                           const std::pair<double, double>& sphere, auto&& centre_at) {
+  // Moves the border of corner `id` (its sphere `sphere`) among the faces `faces` of its
+  // blend of radius `radius` to the planes where the sphere meets the cylinders (file
+  // comment); `centre_at`: a face's centre of curvature.
+  auto refine_corner = [&](const auto& faces, std::size_t id, const Sphere& sphere, double radius,
+                           auto&& centre_at) {
+    const Eigen::Vector3d& c = sphere.centre;
     cylinders.clear();
     cylinder_faces.clear();
     nearby.clear();
@@ -296,19 +302,22 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
     // the rim of the corner, which its noisy fits left out of it, bend towards the axis)
     const double sin_off = std::sin(Limits::off_axis_angle * to_radians);
     std::vector<Eigen::Vector3d> axis(cylinders.size());
-    for(int pass = 0; pass < 3; ++pass)
-    {
+    auto fit_axes = [&]() {
       for(std::size_t k = 0; k < cylinders.size(); ++k)
       {
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cylinders[k].moments);
         axis[k] = es.eigenvectors().col(0);
         if(axis[k].dot(cylinders[k].direction) < 0) axis[k] = -axis[k];
-        if(pass < 2) cylinders[k].moments.setZero();
       }
-      if(pass == 2) break;
+    };
+    fit_axes();
+    for(int pass = 0; pass < 2; ++pass)
+    {
+      for(Cylinder& cylinder : cylinders) cylinder.moments.setZero();
       for(const auto& [k, g] : cylinder_faces)
         if(std::abs(normal[g].dot(axis[k])) <= sin_off)
           cylinders[k].moments += area[g] * normal[g] * normal[g].transpose();
+      fit_axes();
     }
     // the planes: of the cylinders of enough faces whose axis goes the way of their
     // centres of curvature (a cluster of stray centres is no cylinder) and away from the
@@ -333,7 +342,7 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
     for(std::size_t i = 0; i < nearby.size(); ++i)
     {
       for(const Eigen::Vector3d& a : planes) inside[i] = inside[i] && (centroid[nearby[i]] - c).dot(a) <= 0.;
-      inside[i] = inside[i] && std::abs((centroid[nearby[i]] - c).norm() - sphere.first) <= sphere.second;
+      inside[i] = inside[i] && std::abs((centroid[nearby[i]] - c).norm() - sphere.radius) <= sphere.band;
       after += inside[i];
     }
     // (a corner that the planes would halve keeps its faces)
@@ -385,6 +394,11 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
     std::sort(magnitude.begin(), magnitude.end());
     const double lower = magnitude[magnitude.size() / 4], upper = magnitude[(3 * magnitude.size()) / 4];
     const double blend = magnitude[magnitude.size() / 2];
+    // a face's centre of curvature: its support's mean centroid moved along the mean
+    // normal by the blend's radius
+    auto centre = [&](std::size_t g) -> Eigen::Vector3d {
+      return mean_point[g] - mean_normal[g] * ((k1[g] > 0 ? 1. : -1.) / blend);
+    };
     if(!(lower > 0) || upper > Limits::quartile_ratio * lower) continue;
     // a blend is mostly cylinders: most of its faces have a small k2
     if(2 * cylindrical < magnitude.size()) continue;
@@ -403,9 +417,6 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
       for(std::size_t g : component) extent += area[g];
       if(component.size() < Limits::least_corner_faces || extent < least_area) continue;
       // a piece of one sphere: its centres of curvature gather round one point
-      auto centre = [&](std::size_t g) -> Eigen::Vector3d {
-        return mean_point[g] - mean_normal[g] * ((k1[g] > 0 ? 1. : -1.) / blend);
-      };
       Eigen::Vector3d mc = Eigen::Vector3d::Zero(), mp = Eigen::Vector3d::Zero();
       for(std::size_t g : component)
       {
@@ -456,14 +467,11 @@ std::size_t mark_blend_corners(const Mesh_indexing<TriangleMesh>& idx, const std
         }
         band = (std::max)(3. * std::sqrt(residual / weight), Limits::least_band * rho);
       }
-      centre_of.push_back(mc);
-      sphere_of.emplace_back(rho, band);
+      sphere_of.push_back(Sphere{ mc, rho, band });
     }
     // the corners' borders at the planes where their spheres meet the cylinders
     for(std::size_t c = first_corner; c < corners; ++c)
-      refine_corner(faces, c + 1, centre_of[c], 1. / blend, sphere_of[c], [&](std::size_t g) {
-        return Eigen::Vector3d(mean_point[g] - mean_normal[g] * ((k1[g] > 0 ? 1. : -1.) / blend));
-      });
+      refine_corner(faces, c + 1, sphere_of[c], 1. / blend, centre);
     // the pieces of the rest smaller than a corner that touch one corner alone (holes
     // that noise makes in a corner, slivers along its rim) join it
     for(std::size_t f : faces) state[f] = 0;

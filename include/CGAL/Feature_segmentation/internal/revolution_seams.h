@@ -545,6 +545,15 @@ inline std::vector<std::size_t> curve_pieces(const std::vector<std::size_t>& fac
   return piece;
 }
 
+// The height along the axis `axis` (its unit direction and a point) of the point c and
+// its distance from the axis: c in the profile plane.
+inline Eigen::Vector2d profile_point(const Eigen::Vector3d& c, const std::pair<Eigen::Vector3d, Eigen::Vector3d>& axis)
+{
+  const Eigen::Vector3d d = c - axis.second;
+  const double z = axis.first.dot(d);
+  return Eigen::Vector2d(z, (d - z * axis.first).norm());
+}
+
 // Per face of `faces` (a region of one surface of revolution or not), its piece of the
 // profile about the axis that fit_revolution_axis() finds (curve_pieces() of the
 // centroids' heights along the axis and distances from it), or an empty vector;
@@ -568,13 +577,14 @@ inline std::vector<std::size_t> revolution_pieces(const std::vector<std::size_t>
   }
   Eigen::Vector3d a, p;
   if(!fit_revolution_axis(c, nn, w, a, p)) return {};
-  if(axis) *axis = std::make_pair(a, p);
+  const std::pair<Eigen::Vector3d, Eigen::Vector3d> fitted(a, p);
+  if(axis) *axis = fitted;
   std::vector<double> z(n), r(n);
   for(std::size_t i = 0; i < n; ++i)
   {
-    const Eigen::Vector3d d = c[i] - p;
-    z[i] = a.dot(d);
-    r[i] = (d - z[i] * a).norm();
+    const Eigen::Vector2d q = profile_point(c[i], fitted);
+    z[i] = q(0);
+    r[i] = q(1);
   }
   return curve_pieces(faces, z, r, w, pairs, centroid, normal, h, 0., 0., nullptr, cut_distance);
 }
@@ -725,15 +735,6 @@ struct Seam_regions
   // whether the face f lies in a region too small to be fitted
   bool small(std::size_t f) const { return !fitted(root[f]); }
 };
-
-// The height along the axis `axis` (its unit direction and a point) of the point c and
-// its distance from the axis: c in the profile plane.
-inline Eigen::Vector2d profile_point(const Eigen::Vector3d& c, const std::pair<Eigen::Vector3d, Eigen::Vector3d>& axis)
-{
-  const Eigen::Vector3d d = c - axis.second;
-  const double z = axis.first.dot(d);
-  return Eigen::Vector2d(z, (d - z * axis.first).norm());
-}
 
 // The unit normal n at the point c in the profile plane of the axis `axis`: its
 // components along the axis and away from it; zero on the axis.
@@ -947,11 +948,11 @@ void join_coaxial_regions(const Mesh_indexing<TriangleMesh>& idx, const std::vec
 // along no face of no piece nor near a cut of that piece, and along no other piece whose
 // profile normal agrees with the region's (an end across a tube's wall is no
 // alternative), whose mean profile normal agrees so with the piece's and whose centroids
-// lie on the piece's profile line (mean squared offset at most Revolution_seams::grow_offset squared
-// times the piece's own). Each island's faces take the piece's region, its piece and the
-// least distance that counts as inside it. `smooth`: unit normals averaged over the faces
-// sharing a vertex; `centroid`, `area`: per face; `edge_faces`: the two faces of each edge
-// (idx.npos on a border).
+// lie on the piece's profile line (mean squared offset at most
+// Revolution_seams::grow_offset squared times the piece's own). Each island's faces take
+// the piece's region, its piece and the least distance that counts as inside it.
+// `smooth`: unit normals averaged over the faces sharing a vertex; `centroid`, `area`:
+// per face; `edge_faces`: the two faces of each edge (idx.npos on a border).
 template <typename TriangleMesh>
 void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std::size_t>& edge_faces,
                   const Seam_regions& regions, const std::vector<std::size_t>& key,
@@ -1096,7 +1097,8 @@ void join_islands(const Mesh_indexing<TriangleMesh>& idx, const std::vector<std:
       const Eigen::Vector3d& l = line.at(Piece(to[r], to_piece[r]));
       const Eigen::Vector2d q = profile_point(centroid[f], axis[to[r]]);
       normal[r] += area[f] * profile_normal(centroid[f], smooth[f], axis[to[r]]);
-      offset[r] += area[f] * std::pow(q(1) - l(0) - l(1) * q(0), 2);
+      const double off = q(1) - l(0) - l(1) * q(0);
+      offset[r] += area[f] * off * off;
       weight[r] += area[f];
       for(const Piece& k : others[r])
       {
